@@ -1,0 +1,83 @@
+#pragma once
+/// \file
+/// Plain definition structs that describe a simulation, with sensible defaults.
+/// They are validated once, when handed to tide::World; all quantities are SI.
+
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+namespace tide {
+
+/// Index of a material in a World (0 is the first material added).
+using MaterialIndex = std::uint16_t;
+
+/// Physical properties of one fluid.
+struct MaterialDef {
+    std::string name = "water";
+    float restDensity = 1000.0f;            ///< kg/m³
+    float viscosity = 0.001f;               ///< dynamic viscosity μ, Pa·s
+    glm::vec3 color{0.2f, 0.45f, 0.9f};     ///< linear RGB in [0, 1], for renderers
+};
+
+/// Pressure from density.
+enum class EquationOfState {
+    Linear,  ///< p = κ (ρ − ρ0), κ = c² (Müller et al. 2003)
+    Tait,    ///< p = B ((ρ/ρ0)^7 − 1), B = ρ0 c² / 7 (Becker & Teschner 2007)
+};
+
+/// How the pressure/viscosity solver runs and how its time step is chosen.
+struct SolverDef {
+    std::string method = "classic";         ///< solver name, see tide::solverNames()
+    EquationOfState equationOfState = EquationOfState::Linear;
+    /// Numerical speed of sound, m/s. 0 picks 10 × the free-fall speed over the
+    /// domain height, which keeps density variations near 1 %.
+    float soundSpeed = 0.0f;
+    /// Negative pressures (tension) pull free-surface particles into clumps; clamp them
+    /// to zero by default, as most SPH codes do.
+    bool clampNegativePressure = true;
+    /// XSPH velocity smoothing ε (Monaghan 1989), in [0, 1]: damps particle-scale noise.
+    float xsph = 0.25f;
+    float cflNumber = 0.4f;                 ///< dt ≤ cfl · h / (c + |v|max)
+    float forceNumber = 0.25f;              ///< dt ≤ forceNumber · √(h / |a|max)
+    float minDt = 1e-6f;                    ///< s; a step never goes below this
+    float maxDt = 5e-3f;                    ///< s
+};
+
+/// What a World is: its container, gravity, resolution and solver.
+struct WorldDef {
+    glm::vec3 domainMin{0.0f, 0.0f, 0.0f};  ///< container corner, m
+    glm::vec3 domainMax{1.0f, 1.0f, 1.0f};  ///< container corner, m
+    bool walls = true;                      ///< keep particles inside the domain box
+    float wallRestitution = 0.0f;           ///< fraction of normal speed kept when hitting a wall
+    glm::vec3 gravity{0.0f, -9.81f, 0.0f};  ///< m/s²
+    float particleSpacing = 0.02f;          ///< initial distance between particles, m
+    float supportRatio = 2.0f;              ///< kernel support radius h / particle spacing
+    std::uint32_t capacity = 1u << 22;      ///< most particles the world may hold
+    int threads = 0;                        ///< worker threads; 0 = all cores
+    int reorderInterval = 25;               ///< steps between re-sorting particles by grid cell
+    SolverDef solver;
+};
+
+/// A box filled with particles on a cubic lattice.
+struct BlockDef {
+    glm::vec3 min{0.0f};
+    glm::vec3 max{0.0f};
+    glm::vec3 velocity{0.0f};
+    MaterialIndex material = 0;
+};
+
+/// A continuous source: a flat outlet that emits one layer of particles each time the
+/// stream has travelled one particle spacing, so the stream has no gaps at any step size.
+struct EmitterDef {
+    glm::vec3 min{0.0f};                    ///< outlet corner (one extent is usually 0)
+    glm::vec3 max{0.0f};
+    glm::vec3 velocity{1.0f, 0.0f, 0.0f};   ///< m/s, must be non-zero
+    MaterialIndex material = 0;
+    double start = 0.0;                     ///< s
+    double end = std::numeric_limits<double>::infinity();  ///< s
+};
+
+}  // namespace tide

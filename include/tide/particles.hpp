@@ -1,0 +1,48 @@
+#pragma once
+/// \file
+/// The particle store: one structure of arrays for every material.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include <tide/defs.hpp>
+
+namespace tide {
+
+/// All fluid particles, structure of arrays, 32-bit indices.
+///
+/// Every array has size(); reordering (by grid cell, for cache locality) applies one
+/// permutation to all of them, so `id` is the way to follow a particle over time.
+/// Later work appends halo particles (owned by another process) after the owned ones.
+class ParticleStore {
+public:
+    std::vector<glm::vec3> position;      ///< m
+    std::vector<glm::vec3> velocity;      ///< m/s
+    std::vector<glm::vec3> acceleration;  ///< m/s², of the last step
+    std::vector<float> density;           ///< kg/m³
+    std::vector<float> pressure;          ///< Pa
+    std::vector<float> mass;              ///< kg
+    std::vector<MaterialIndex> material;
+    std::vector<std::uint32_t> id;        ///< stable identity, unchanged by reordering
+
+    /// Number of particles.
+    [[nodiscard]] std::uint32_t size() const { return static_cast<std::uint32_t>(position.size()); }
+    [[nodiscard]] bool empty() const { return position.empty(); }
+
+    /// Reserve room for n particles in every array.
+    void reserve(std::uint32_t n);
+    /// Append one particle at rest pressure; its id is the next free id.
+    void append(const glm::vec3& x, const glm::vec3& v, float m, MaterialIndex mat, float rho0);
+    /// Reorder every array so that new[k] = old[order[k]]; order is a permutation of [0, size()).
+    void permute(std::span<const std::uint32_t> order);
+    /// Drop every particle.
+    void clear();
+
+private:
+    std::uint32_t nextId_ = 0;
+};
+
+}  // namespace tide

@@ -1,0 +1,89 @@
+#pragma once
+/// \file
+/// tide::World — one simulation: particles, materials, sources and a solver.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <tide/defs.hpp>
+#include <tide/particles.hpp>
+
+namespace tide {
+
+/// Why addBlock() added nothing.
+enum class AddStatus {
+    Added,           ///< every particle of the block was added
+    OutsideDomain,   ///< the block is not inside the container
+    OverCapacity,    ///< the block would exceed WorldDef::capacity
+};
+
+/// Figures of the last step and running totals.
+struct WorldStats {
+    std::uint64_t steps = 0;            ///< time steps taken since creation
+    double lastDt = 0.0;                ///< s
+    float maxSpeed = 0.0f;              ///< m/s, after the last step
+    float meanDensityError = 0.0f;      ///< mean |ρ − ρ0| / ρ0 over all particles, last step
+    float meanCompression = 0.0f;       ///< mean max(ρ − ρ0, 0) / ρ0 (SPlisHSPlasH's measure)
+    std::uint64_t emitterCapacityHits = 0;  ///< layers an emitter could not emit: world full
+};
+
+/// Names of the solvers World accepts in SolverDef::method.
+std::vector<std::string> solverNames();
+
+/// One simulation. Not copyable; move it or hold it by pointer.
+///
+/// Creation validates the WorldDef and throws std::invalid_argument naming the field
+/// and value at fault. All units are SI.
+class World {
+public:
+    explicit World(const WorldDef& def);
+    ~World();
+    World(World&&) noexcept;
+    World& operator=(World&&) noexcept;
+    World(const World&) = delete;
+    World& operator=(const World&) = delete;
+
+    /// Add a material; its index is returned. Throws std::invalid_argument on bad values.
+    MaterialIndex addMaterial(const MaterialDef& material);
+    [[nodiscard]] const std::vector<MaterialDef>& materials() const;
+    /// Mass of one particle of a material, kg (ρ0 times the volume a lattice particle fills).
+    [[nodiscard]] float particleMass(MaterialIndex material) const;
+
+    /// Fill a box with particles on a lattice of the world's spacing, centred in the box.
+    /// Adds all of them or none (see AddStatus).
+    AddStatus addBlock(const BlockDef& block);
+    /// Whether a box lies inside the container (always true without walls).
+    [[nodiscard]] bool insideDomain(const glm::vec3& min, const glm::vec3& max) const;
+    /// Number of particles addBlock(block) would add.
+    [[nodiscard]] std::uint32_t countBlock(const BlockDef& block) const;
+
+    /// Add a continuous source; returns its index for setEmitterActive().
+    std::uint32_t addEmitter(const EmitterDef& emitter);
+    /// Switch an emitter on or off (on when added).
+    void setEmitterActive(std::uint32_t emitter, bool active);
+    [[nodiscard]] std::uint32_t emitterCount() const;
+
+    /// Take one time step of adaptive length, at most maxDt seconds; returns its length.
+    double step(double maxDt);
+    /// Advance exactly `duration` seconds in as many adaptive steps as needed.
+    void advance(double duration);
+
+    [[nodiscard]] double time() const;
+    [[nodiscard]] const ParticleStore& particles() const;
+    [[nodiscard]] const WorldStats& stats() const;
+    [[nodiscard]] const WorldDef& def() const;
+    /// Kernel support radius h, m.
+    [[nodiscard]] float supportRadius() const;
+    /// Worker threads the hot loops use.
+    [[nodiscard]] int threads() const;
+    /// Remove every particle and emitter, keep materials, reset time to 0.
+    void clear();
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tide

@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs the Debian packages tide needs to build, test and benchmark. Idempotent and
+# quiet when everything is present.
+set -euo pipefail
+
+packages=(cmake make g++ libglm-dev libgtest-dev libgmock-dev libbenchmark-dev)
+
+missing=()
+for pkg in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$pkg" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$pkg")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -eq 0 ]; then
+  sudo=""
+elif command -v sudo >/dev/null 2>&1; then
+  sudo="sudo"
+else
+  echo "tide: missing Debian packages: ${missing[*]} (run as root or install them yourself)" >&2
+  exit 1
+fi
+echo "tide: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,48 @@
+#include "boundary/boundary_particles.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tide {
+
+namespace {
+/// Lattice coordinates along one axis: `layers` beyond each wall, and the interior lattice
+/// min + (i + ½)·step stretched to fit the extent exactly.
+std::vector<float> axisCoordinates(float lo, float hi, float spacing, int layers, std::vector<bool>& inside) {
+    const float extent = hi - lo;
+    const int n = std::max(1, static_cast<int>(std::lround(extent / spacing)));
+    const float step = extent / static_cast<float>(n);
+    std::vector<float> coords;
+    inside.clear();
+    for (int k = layers - 1; k >= 0; --k) {
+        coords.push_back(lo - (static_cast<float>(k) + 0.5f) * spacing);
+        inside.push_back(false);
+    }
+    for (int i = 0; i < n; ++i) {
+        coords.push_back(lo + (static_cast<float>(i) + 0.5f) * step);
+        inside.push_back(true);
+    }
+    for (int k = 0; k < layers; ++k) {
+        coords.push_back(hi + (static_cast<float>(k) + 0.5f) * spacing);
+        inside.push_back(false);
+    }
+    return coords;
+}
+}  // namespace
+
+void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& max, float spacing, int layers,
+                                       float particleVolume, float searchRadius, int threads) {
+    std::vector<bool> inX, inY, inZ;
+    const auto xs = axisCoordinates(min.x, max.x, spacing, layers, inX);
+    const auto ys = axisCoordinates(min.y, max.y, spacing, layers, inY);
+    const auto zs = axisCoordinates(min.z, max.z, spacing, layers, inZ);
+    position.clear();
+    for (std::size_t k = 0; k < zs.size(); ++k)
+        for (std::size_t j = 0; j < ys.size(); ++j)
+            for (std::size_t i = 0; i < xs.size(); ++i)
+                if (!(inX[i] && inY[j] && inZ[k])) position.emplace_back(xs[i], ys[j], zs[k]);
+    volume.assign(position.size(), particleVolume);
+    grid.build(position, searchRadius, threads);
+}
+
+}  // namespace tide

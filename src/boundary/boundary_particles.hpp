@@ -1,0 +1,39 @@
+#pragma once
+/// \file
+/// Static boundary particles: walls sampled as particles that take part in the fluid's
+/// SPH sums (Akinci, Ihmsen, Akinci, Solenthaler & Teschner 2012, "Versatile rigid-fluid
+/// coupling for incompressible SPH"). A boundary particle b adds ρ0_i V_b W_ib to the
+/// density of fluid particle i (eq. 4 with Ψ_b = ρ0_i V_b) and mirrors i's pressure in the
+/// pressure force (p_b = p_i, ρ_b = ρ0_i).
+///
+/// The container's walls are a shell of whole lattice layers, thick enough to cover the
+/// kernel support, continuing the fluid's own lattice beyond each wall. A shell of full
+/// thickness is a complete lattice, so each particle's volume is simply that of a lattice
+/// particle (Akinci's per-particle volume correction is for single-layer sampling);
+/// a block of fluid resting against a wall, edge or corner then has exactly rest density.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "neighbors/neighbor_list.hpp"
+#include "neighbors/uniform_grid.hpp"
+
+namespace tide {
+
+class BoundaryParticles {
+public:
+    /// Sample the walls of the box [min, max] with a shell `layers` deep at `spacing`;
+    /// every particle gets `volume` (m³).
+    void sampleBoxShell(const glm::vec3& min, const glm::vec3& max, float spacing, int layers, float volume,
+                        float searchRadius, int threads);
+
+    [[nodiscard]] std::uint32_t size() const { return static_cast<std::uint32_t>(position.size()); }
+
+    std::vector<glm::vec3> position;  ///< m
+    std::vector<float> volume;        ///< V_b, m³
+    UniformGrid grid;                 ///< built once: boundary particles do not move
+};
+
+}  // namespace tide

@@ -1,0 +1,131 @@
+#pragma once
+/// \file
+/// SPH smoothing kernels in 3D, support radius h (zero for r ≥ h), each with value,
+/// gradient and Laplacian.
+///
+/// Poly6, Spiky and Viscosity follow Müller, Charypar & Gross 2003, "Particle-based fluid
+/// simulation for interactive applications", eqs. (20)–(22), in the corrected forms of
+/// SPEC.md §1. The cubic spline is Monaghan 1992 rescaled to support h
+/// (as in SPlisHSPlasH's CubicKernel). Gradients take r⃗ = x_i − x_j and r = |r⃗|.
+
+#include <numbers>
+
+#include <glm/vec3.hpp>
+
+namespace tide::kernels {
+
+inline constexpr float pi = std::numbers::pi_v<float>;
+
+/// W = 315/(64π h⁹) (h² − r²)³. Smooth at r = 0: used for density.
+struct Poly6 {
+    float h, h2, norm, gradNorm;
+    explicit Poly6(float support)
+        : h(support), h2(support * support),
+          norm(315.0f / (64.0f * pi * h2 * h2 * h2 * h2 * support)),
+          gradNorm(-945.0f / (32.0f * pi * h2 * h2 * h2 * h2 * support)) {}
+    /// Value from r² (no square root needed).
+    [[nodiscard]] float valueSq(float r2) const {
+        if (r2 >= h2) return 0.0f;
+        const float d = h2 - r2;
+        return norm * d * d * d;
+    }
+    [[nodiscard]] float value(float r) const { return valueSq(r * r); }
+    [[nodiscard]] glm::vec3 gradient(const glm::vec3& rij, float r) const {
+        if (r >= h) return glm::vec3(0.0f);
+        const float d = h2 - r * r;
+        return (gradNorm * d * d) * rij;
+    }
+    [[nodiscard]] float laplacian(float r) const {
+        if (r >= h) return 0.0f;
+        const float r2 = r * r;
+        return gradNorm * (h2 - r2) * (3.0f * h2 - 7.0f * r2);
+    }
+};
+
+/// W = 15/(π h⁶) (h − r)³. Its gradient does not vanish at r → 0, so close particles
+/// still repel: used for pressure.
+struct Spiky {
+    float h, norm, gradNorm;
+    explicit Spiky(float support)
+        : h(support), norm(15.0f / (pi * support * support * support * support * support * support)),
+          gradNorm(-45.0f / (pi * support * support * support * support * support * support)) {}
+    [[nodiscard]] float value(float r) const {
+        if (r >= h) return 0.0f;
+        const float d = h - r;
+        return norm * d * d * d;
+    }
+    /// ∇W = −45/(π h⁶) (h − r)² r̂; zero at r = 0 exactly (direction undefined).
+    [[nodiscard]] glm::vec3 gradient(const glm::vec3& rij, float r) const {
+        if (r >= h || r <= 0.0f) return glm::vec3(0.0f);
+        const float d = h - r;
+        return (gradNorm * d * d / r) * rij;
+    }
+    /// Magnitude factor of the gradient, −45/(π h⁶)(h − r)², for callers holding r̂.
+    [[nodiscard]] float gradientScale(float r) const {
+        if (r >= h) return 0.0f;
+        const float d = h - r;
+        return gradNorm * d * d;
+    }
+    /// ∇²W = W'' + 2W'/r = 90/(π h⁶) (h − r)(2r − h)/r.
+    [[nodiscard]] float laplacian(float r) const {
+        if (r >= h) return 0.0f;
+        return -6.0f * gradNorm / 3.0f * (h - r) * (2.0f * r - h) / r;
+    }
+};
+
+/// W = 15/(2π h³) (−r³/(2h³) + r²/h² + h/(2r) − 1). Its Laplacian 45/(π h⁶)(h − r) is
+/// positive everywhere: used for viscosity.
+struct Viscosity {
+    float h, norm, lapNorm;
+    explicit Viscosity(float support)
+        : h(support), norm(15.0f / (2.0f * pi * support * support * support)),
+          lapNorm(45.0f / (pi * support * support * support * support * support * support)) {}
+    [[nodiscard]] float value(float r) const {
+        if (r >= h || r <= 0.0f) return 0.0f;
+        const float q = r / h;
+        return norm * (-0.5f * q * q * q + q * q + 0.5f / q - 1.0f);
+    }
+    [[nodiscard]] glm::vec3 gradient(const glm::vec3& rij, float r) const {
+        if (r >= h || r <= 0.0f) return glm::vec3(0.0f);
+        const float h3 = h * h * h;
+        return (norm * (-1.5f * r / h3 + 2.0f / (h * h) - 0.5f * h / (r * r * r))) * rij;
+    }
+    [[nodiscard]] float laplacian(float r) const { return r >= h ? 0.0f : lapNorm * (h - r); }
+};
+
+/// Monaghan's cubic B-spline with support h (q = r/h):
+/// σ(6q³ − 6q² + 1) for q ≤ ½, 2σ(1 − q)³ for q ≤ 1, σ = 8/(π h³).
+struct CubicSpline {
+    float h, invH, sigma;
+    explicit CubicSpline(float support)
+        : h(support), invH(1.0f / support), sigma(8.0f / (pi * support * support * support)) {}
+    [[nodiscard]] float value(float r) const {
+        const float q = r * invH;
+        if (q >= 1.0f) return 0.0f;
+        if (q <= 0.5f) return sigma * (6.0f * q * q * q - 6.0f * q * q + 1.0f);
+        const float d = 1.0f - q;
+        return sigma * 2.0f * d * d * d;
+    }
+    /// dW/dr.
+    [[nodiscard]] float derivative(float r) const {
+        const float q = r * invH;
+        if (q >= 1.0f) return 0.0f;
+        if (q <= 0.5f) return sigma * invH * (18.0f * q * q - 12.0f * q);
+        const float d = 1.0f - q;
+        return -sigma * invH * 6.0f * d * d;
+    }
+    [[nodiscard]] glm::vec3 gradient(const glm::vec3& rij, float r) const {
+        if (r <= 0.0f) return glm::vec3(0.0f);
+        return (derivative(r) / r) * rij;
+    }
+    /// ∇²W = W'' + 2W'/r.
+    [[nodiscard]] float laplacian(float r) const {
+        const float q = r * invH;
+        if (q >= 1.0f || r <= 0.0f) return 0.0f;
+        const float second = q <= 0.5f ? sigma * invH * invH * (36.0f * q - 12.0f)
+                                       : sigma * invH * invH * 12.0f * (1.0f - q);
+        return second + 2.0f * derivative(r) / r;
+    }
+};
+
+}  // namespace tide::kernels

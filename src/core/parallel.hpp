@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// The one parallel-for of the core. Static scheduling and per-index work keep results
+/// bit-identical for any thread count: nothing is accumulated across indices inside it,
+/// and the only reductions are min/max, which do not depend on order.
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+
+#include <omp.h>
+
+namespace tide {
+
+/// Threads to use for a request of `requested` (0 or less = all cores).
+inline int resolveThreadCount(int requested) {
+    return requested > 0 ? requested : std::max(1, omp_get_num_procs());
+}
+
+/// Below this many indices a loop runs serially: the fork costs more than it saves.
+inline constexpr std::uint32_t kParallelGrain = 2048;
+
+/// Call f(i) for i in [0, n) on `threads` threads.
+template <class F>
+void parallelFor(std::uint32_t n, int threads, F&& f) {
+    const bool parallel = threads > 1 && n >= kParallelGrain;
+#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) f(static_cast<std::uint32_t>(i));
+}
+
+/// max over i in [0, n) of f(i), or `init` when n == 0.
+template <class F>
+float parallelMax(std::uint32_t n, int threads, F&& f, float init = -std::numeric_limits<float>::infinity()) {
+    float result = init;
+    const bool parallel = threads > 1 && n >= kParallelGrain;
+#pragma omp parallel for schedule(static) num_threads(threads) if (parallel) reduction(max : result)
+    for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
+        result = std::max(result, static_cast<float>(f(static_cast<std::uint32_t>(i))));
+    return result;
+}
+
+}  // namespace tide

@@ -1,0 +1,303 @@
+#include <tide/world.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+#include <glm/geometric.hpp>
+
+#include "boundary/boundary_particles.hpp"
+#include "boundary/wall_box.hpp"
+#include "core/kernels.hpp"
+#include "core/parallel.hpp"
+#include "core/validate.hpp"
+#include "neighbors/neighbor_list.hpp"
+#include "neighbors/uniform_grid.hpp"
+#include "solvers/solver.hpp"
+#include "sources/emitter.hpp"
+#include "sources/lattice.hpp"
+
+namespace tide {
+
+namespace {
+
+void validateWorldDef(const WorldDef& d) {
+    for (int axis = 0; axis < 3; ++axis) {
+        requireFinite("domain.min", d.domainMin[axis]);
+        requireFinite("domain.max", d.domainMax[axis]);
+        if (!(d.domainMax[axis] > d.domainMin[axis]))
+            throw std::invalid_argument("domain: max must exceed min on every axis, got min " + show(d.domainMin) +
+                                        " max " + show(d.domainMax));
+        requireFinite("gravity", d.gravity[axis]);
+    }
+    requirePositive("particleSpacing", d.particleSpacing);
+    requireInRange("supportRatio", d.supportRatio, 1.0f, 4.0f);
+    requireInRange("wallRestitution", d.wallRestitution, 0.0f, 1.0f);
+    if (d.capacity == 0) throw std::invalid_argument("capacity: must be > 0, got 0");
+    if (d.threads < 0) throw std::invalid_argument("threads: must be >= 0, got " + std::to_string(d.threads));
+    if (d.reorderInterval < 0)
+        throw std::invalid_argument("reorderInterval: must be >= 0, got " + std::to_string(d.reorderInterval));
+    const SolverDef& s = d.solver;
+    if (!(s.soundSpeed >= 0.0f) || !std::isfinite(s.soundSpeed))
+        throw std::invalid_argument("solver.soundSpeed: must be >= 0 (0 = automatic), got " + show(s.soundSpeed));
+    requireInRange("solver.xsph", s.xsph, 0.0f, 1.0f);
+    requireInRange("solver.cflNumber", s.cflNumber, 1e-4f, 1.0f);
+    requireInRange("solver.forceNumber", s.forceNumber, 1e-4f, 1.0f);
+    requirePositive("solver.minDt", s.minDt);
+    requirePositive("solver.maxDt", s.maxDt);
+    if (s.minDt > s.maxDt)
+        throw std::invalid_argument("solver.minDt: must not exceed solver.maxDt (" + show(s.maxDt) + "), got " +
+                                    show(s.minDt));
+}
+
+void validateMaterial(const MaterialDef& m) {
+    requirePositive("material.restDensity", m.restDensity);
+    if (!(m.viscosity >= 0.0f) || !std::isfinite(m.viscosity))
+        throw std::invalid_argument("material.viscosity: must be >= 0 Pa·s, got " + show(m.viscosity));
+}
+
+/// Σ_k W_poly6(|k|·s) over the cubic lattice: a lattice particle of mass ρ0 / this sum has
+/// exactly the rest density inside a filled block, so blocks start at rest.
+float latticeKernelSum(float spacing, float h) {
+    const kernels::Poly6 poly6(h);
+    const int reach = static_cast<int>(std::ceil(h / spacing));
+    double sum = 0.0;
+    for (int z = -reach; z <= reach; ++z)
+        for (int y = -reach; y <= reach; ++y)
+            for (int x = -reach; x <= reach; ++x) {
+                const glm::vec3 r = spacing * glm::vec3(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
+                sum += poly6.valueSq(glm::dot(r, r));
+            }
+    return static_cast<float>(sum);
+}
+
+}  // namespace
+
+struct World::Impl {
+    WorldDef def;
+    int threads;
+    float h;
+    float latticeSum;
+    std::vector<MaterialDef> materials;
+    ParticleStore particles;
+    UniformGrid grid;
+    NeighborList neighbors;
+    BoundaryParticles boundary;
+    NeighborList boundaryNeighbors;
+    std::unique_ptr<Solver> solver;
+    std::vector<EmitterState> emitters;
+    double time = 0.0;
+    float soundSpeed = 0.0f;  ///< resolved at the first step when SolverDef::soundSpeed is 0
+    int stepsSinceReorder = 0;
+    WorldStats stats;
+
+    explicit Impl(const WorldDef& d)
+        : def(d), threads(resolveThreadCount(d.threads)), h(d.particleSpacing * d.supportRatio),
+          latticeSum(latticeKernelSum(d.particleSpacing, h)), solver(makeSolver(d.solver.method)),
+          soundSpeed(d.solver.soundSpeed) {
+        if (def.walls) {
+            const int layers = static_cast<int>(std::ceil(h / def.particleSpacing));
+            boundary.sampleBoxShell(def.domainMin, def.domainMax, def.particleSpacing, layers, 1.0f / latticeSum, h,
+                                    threads);
+        }
+    }
+
+    [[nodiscard]] float massOf(MaterialIndex m) const { return materials[m].restDensity / latticeSum; }
+
+    [[nodiscard]] bool insideDomain(const Lattice& lattice) const {
+        if (!def.walls) return true;
+        const glm::vec3 last = lattice.first + lattice.spacing * glm::vec3(lattice.count - 1u);
+        const float slack = 1e-5f * glm::length(def.domainMax - def.domainMin);
+        for (int axis = 0; axis < 3; ++axis)
+            if (lattice.first[axis] < def.domainMin[axis] - slack || last[axis] > def.domainMax[axis] + slack)
+                return false;
+        return true;
+    }
+
+    void appendLattice(const Lattice& lattice, const glm::vec3& velocity, MaterialIndex material) {
+        const float m = massOf(material);
+        const float rho0 = materials[material].restDensity;
+        lattice.forEach([&](const glm::vec3& x) { particles.append(x, velocity, m, material, rho0); });
+    }
+
+    /// The speed of sound: given, or 10 × the fastest speed the scene can reach by falling
+    /// through the domain or by its initial/emitted velocities (density varies by ~(v/c)²).
+    void resolveSoundSpeed() {
+        if (soundSpeed > 0.0f) return;
+        const glm::vec3 extent = def.domainMax - def.domainMin;
+        const float g = glm::length(def.gravity);
+        const float height = g > 0.0f ? std::abs(glm::dot(extent, def.gravity / g)) : std::max({extent.x, extent.y, extent.z});
+        float reference = std::sqrt(2.0f * (g > 0.0f ? g : 9.81f) * height);
+        for (const glm::vec3& v : particles.velocity) reference = std::max(reference, glm::length(v));
+        for (const EmitterState& e : emitters) reference = std::max(reference, glm::length(e.def.velocity));
+        soundSpeed = 10.0f * reference;
+    }
+
+    void rebuildNeighbors() {
+        grid.build(particles.position, h, threads);
+        if (def.reorderInterval > 0 && ++stepsSinceReorder >= def.reorderInterval) {
+            // One permutation for every array: particles of a cell become contiguous in memory.
+            const auto order = grid.sortedParticles();
+            particles.permute(std::vector<std::uint32_t>(order.begin(), order.end()));
+            grid.build(particles.position, h, threads);
+            stepsSinceReorder = 0;
+        }
+        neighbors.build(grid, particles.position, h, threads);
+        boundaryNeighbors.build(boundary.grid, boundary.position, particles.position, h, threads, false);
+    }
+
+    void emit(double t0, double dt) {
+        for (EmitterState& emitter : emitters) {
+            emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
+                if (particles.size() + layer.size() > def.capacity) {
+                    ++stats.emitterCapacityHits;
+                    return;
+                }
+                appendLattice(layer, emitter.def.velocity, emitter.def.material);
+            });
+        }
+    }
+
+    void updateStats(double dt) {
+        ++stats.steps;
+        stats.lastDt = dt;
+        double errorSum = 0.0, compressionSum = 0.0, maxSpeed2 = 0.0;
+        for (std::uint32_t i = 0; i < particles.size(); ++i) {
+            const double rho0 = materials[particles.material[i]].restDensity;
+            const double error = (particles.density[i] - rho0) / rho0;
+            errorSum += std::abs(error);
+            compressionSum += std::max(error, 0.0);
+            maxSpeed2 = std::max(maxSpeed2, static_cast<double>(glm::dot(particles.velocity[i], particles.velocity[i])));
+        }
+        const double n = std::max<double>(1.0, particles.size());
+        stats.meanDensityError = static_cast<float>(errorSum / n);
+        stats.meanCompression = static_cast<float>(compressionSum / n);
+        stats.maxSpeed = static_cast<float>(std::sqrt(maxSpeed2));
+    }
+};
+
+World::World(const WorldDef& def) {
+    validateWorldDef(def);
+    impl_ = std::make_unique<Impl>(def);
+}
+World::~World() = default;
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+
+MaterialIndex World::addMaterial(const MaterialDef& material) {
+    validateMaterial(material);
+    if (impl_->materials.size() >= std::numeric_limits<MaterialIndex>::max())
+        throw std::invalid_argument("materials: at most 65535 materials, got one more");
+    impl_->materials.push_back(material);
+    return static_cast<MaterialIndex>(impl_->materials.size() - 1);
+}
+
+const std::vector<MaterialDef>& World::materials() const { return impl_->materials; }
+
+float World::particleMass(MaterialIndex material) const {
+    if (material >= impl_->materials.size())
+        throw std::invalid_argument("material: no material " + std::to_string(material));
+    return impl_->massOf(material);
+}
+
+namespace {
+void validateBox(const char* what, const glm::vec3& min, const glm::vec3& max) {
+    for (int axis = 0; axis < 3; ++axis) {
+        requireFinite(what, min[axis]);
+        requireFinite(what, max[axis]);
+        if (min[axis] > max[axis])
+            throw std::invalid_argument(std::string(what) + ": min " + show(min) + " exceeds max " + show(max));
+    }
+}
+}  // namespace
+
+bool World::insideDomain(const glm::vec3& min, const glm::vec3& max) const {
+    return impl_->insideDomain(Lattice(min, max, impl_->def.particleSpacing));
+}
+
+std::uint32_t World::countBlock(const BlockDef& block) const {
+    const Lattice lattice(block.min, block.max, impl_->def.particleSpacing);
+    return static_cast<std::uint32_t>(std::min<std::uint64_t>(lattice.size(), 0xffffffffu));
+}
+
+AddStatus World::addBlock(const BlockDef& block) {
+    validateBox("block", block.min, block.max);
+    if (block.material >= impl_->materials.size())
+        throw std::invalid_argument("block.material: no material " + std::to_string(block.material));
+    const Lattice lattice(block.min, block.max, impl_->def.particleSpacing);
+    if (!impl_->insideDomain(lattice)) return AddStatus::OutsideDomain;
+    if (impl_->particles.size() + lattice.size() > impl_->def.capacity) return AddStatus::OverCapacity;
+    impl_->appendLattice(lattice, block.velocity, block.material);
+    return AddStatus::Added;
+}
+
+std::uint32_t World::addEmitter(const EmitterDef& emitter) {
+    validateBox("emitter", emitter.min, emitter.max);
+    if (emitter.material >= impl_->materials.size())
+        throw std::invalid_argument("emitter.material: no material " + std::to_string(emitter.material));
+    if (!(glm::length(emitter.velocity) > 0.0f) || !std::isfinite(glm::length(emitter.velocity)))
+        throw std::invalid_argument("emitter.velocity: must be non-zero and finite, got " + show(emitter.velocity));
+    if (!(emitter.end > emitter.start))
+        throw std::invalid_argument("emitter.end: must be after emitter.start");
+    if (!impl_->insideDomain(Lattice(emitter.min, emitter.max, impl_->def.particleSpacing)))
+        throw std::invalid_argument("emitter: outlet " + show(emitter.min) + ".." + show(emitter.max) +
+                                    " lies outside the domain");
+    impl_->emitters.push_back(EmitterState{emitter});
+    return static_cast<std::uint32_t>(impl_->emitters.size() - 1);
+}
+
+void World::setEmitterActive(std::uint32_t emitter, bool active) {
+    if (emitter >= impl_->emitters.size())
+        throw std::invalid_argument("emitter: no emitter " + std::to_string(emitter));
+    impl_->emitters[emitter].active = active;
+}
+
+std::uint32_t World::emitterCount() const { return static_cast<std::uint32_t>(impl_->emitters.size()); }
+
+double World::step(double maxDt) {
+    Impl& w = *impl_;
+    if (w.materials.empty()) w.materials.push_back(MaterialDef{});
+    w.resolveSoundSpeed();
+    w.rebuildNeighbors();
+    StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
+                    w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.threads, maxDt};
+    const double dt = w.solver->step(ctx);
+    if (w.def.walls) {
+        const WallBox walls{w.def.domainMin, w.def.domainMax, 0.5f * w.def.particleSpacing, w.def.wallRestitution};
+        walls.enforce(w.particles, w.threads);
+    }
+    w.updateStats(dt);
+    w.emit(w.time, dt);
+    w.time += dt;
+    return dt;
+}
+
+void World::advance(double duration) {
+    if (!(duration >= 0.0) || !std::isfinite(duration))
+        throw std::invalid_argument("duration: must be finite and >= 0, got " + std::to_string(duration));
+    const double end = impl_->time + duration;
+    // Steps shorter than a nanosecond only chase round-off.
+    while (end - impl_->time > 1e-9) step(end - impl_->time);
+    impl_->time = std::max(impl_->time, end);
+}
+
+double World::time() const { return impl_->time; }
+const ParticleStore& World::particles() const { return impl_->particles; }
+const WorldStats& World::stats() const { return impl_->stats; }
+const WorldDef& World::def() const { return impl_->def; }
+float World::supportRadius() const { return impl_->h; }
+int World::threads() const { return impl_->threads; }
+
+void World::clear() {
+    Impl& w = *impl_;
+    w.particles.clear();
+    w.emitters.clear();
+    w.time = 0.0;
+    w.stats = WorldStats{};
+    w.soundSpeed = w.def.solver.soundSpeed;
+    w.stepsSinceReorder = 0;
+}
+
+}  // namespace tide

@@ -1,0 +1,63 @@
+#include "neighbors/uniform_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "core/parallel.hpp"
+
+namespace tide {
+
+namespace {
+int clampCoord(float c, int dim) {
+    // `c > 0 ? c : 0` also maps NaN to 0.
+    const float lo = c > 0.0f ? c : 0.0f;
+    const float hi = static_cast<float>(dim - 1);
+    return static_cast<int>(lo < hi ? lo : hi);
+}
+}  // namespace
+
+glm::ivec3 UniformGrid::cellOf(const glm::vec3& x) const {
+    const glm::vec3 c = (x - origin_) * invCellSize_;
+    return {clampCoord(c.x, dims_.x), clampCoord(c.y, dims_.y), clampCoord(c.z, dims_.z)};
+}
+
+void UniformGrid::build(std::span<const glm::vec3> positions, float minCellSize, int threads) {
+    const auto n = static_cast<std::uint32_t>(positions.size());
+    glm::vec3 lo(0.0f), hi(0.0f);
+    if (n > 0) {
+        auto finiteOr = [](float v) { return std::isfinite(v) ? v : 0.0f; };
+        for (int axis = 0; axis < 3; ++axis) {
+            lo[axis] = -parallelMax(n, threads, [&](std::uint32_t i) { return -finiteOr(positions[i][axis]); });
+            hi[axis] = parallelMax(n, threads, [&](std::uint32_t i) { return finiteOr(positions[i][axis]); });
+        }
+    }
+    const glm::vec3 extent = hi - lo;
+    const double maxCells = 8.0 * n + 4096.0;
+    double cell = minCellSize;
+    auto cellsFor = [&](double edge) {
+        return (std::floor(extent.x / edge) + 1.0) * (std::floor(extent.y / edge) + 1.0) *
+               (std::floor(extent.z / edge) + 1.0);
+    };
+    while (cellsFor(cell) > maxCells) cell *= 1.5;
+    cellSize_ = static_cast<float>(cell);
+    invCellSize_ = 1.0f / cellSize_;
+    origin_ = lo;
+    dims_ = glm::ivec3(static_cast<int>(extent.x / cell) + 1, static_cast<int>(extent.y / cell) + 1,
+                       static_cast<int>(extent.z / cell) + 1);
+    const auto cells = static_cast<std::uint32_t>(dims_.x) * static_cast<std::uint32_t>(dims_.y) *
+                       static_cast<std::uint32_t>(dims_.z);
+
+    cellOfParticle_.resize(n);
+    parallelFor(n, threads, [&](std::uint32_t i) { cellOfParticle_[i] = cellIndex(cellOf(positions[i])); });
+
+    // Stable counting sort: count, exclusive prefix sum, scatter in index order.
+    cellStart_.assign(static_cast<std::size_t>(cells) + 1, 0);
+    for (std::uint32_t i = 0; i < n; ++i) ++cellStart_[cellOfParticle_[i] + 1];
+    for (std::uint32_t c = 0; c < cells; ++c) cellStart_[c + 1] += cellStart_[c];
+    sorted_.resize(n);
+    std::vector<std::uint32_t> cursor(cellStart_.begin(), cellStart_.end() - 1);
+    for (std::uint32_t i = 0; i < n; ++i) sorted_[cursor[cellOfParticle_[i]]++] = i;
+}
+
+}  // namespace tide

@@ -1,0 +1,66 @@
+#pragma once
+/// \file
+/// A dense uniform grid over the particles' bounding box, built each step by a stable
+/// counting sort of particle indices into cells (the seed's `Grid`). Cells are at least
+/// the search radius wide, so a particle's neighbours lie in its 3×3×3 block of cells.
+/// Cell index = x + dims.x · (y + dims.y · z): along x, neighbouring cells are adjacent
+/// in the sorted order, so a 3×3×3 search reads 9 contiguous ranges.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/ext/vector_int3.hpp>
+
+namespace tide {
+
+class UniformGrid {
+public:
+    /// Bin `positions` into cells of edge ≥ minCellSize. The edge grows when the bounding
+    /// box would need more than ~8 cells per particle, so a stray particle far away costs
+    /// memory proportional to the particle count, never to the distance.
+    void build(std::span<const glm::vec3> positions, float minCellSize, int threads);
+
+    [[nodiscard]] float cellSize() const { return cellSize_; }
+    [[nodiscard]] glm::ivec3 dims() const { return dims_; }
+    [[nodiscard]] glm::vec3 origin() const { return origin_; }
+    /// Cell coordinates of a point, clamped into the grid (non-finite input maps to a border cell).
+    [[nodiscard]] glm::ivec3 cellOf(const glm::vec3& x) const;
+    [[nodiscard]] std::uint32_t cellIndex(const glm::ivec3& c) const {
+        return static_cast<std::uint32_t>(c.x + dims_.x * (c.y + dims_.y * c.z));
+    }
+    /// First position in sortedParticles() of cell c; cellStart(c + 1) is one past its last.
+    [[nodiscard]] std::uint32_t cellStart(std::uint32_t c) const { return cellStart_[c]; }
+    /// Particle indices ordered by cell, stable (by index) inside a cell.
+    [[nodiscard]] std::span<const std::uint32_t> sortedParticles() const { return sorted_; }
+    [[nodiscard]] std::uint32_t cellCount() const { return static_cast<std::uint32_t>(cellStart_.size() - 1); }
+
+    /// Calls f(begin, end) for the 9 contiguous runs of sortedParticles() that make up the
+    /// 3×3×3 cells around cell c, in a fixed order (z, then y).
+    template <class F>
+    void forEachNeighborRun(const glm::ivec3& c, F&& f) const {
+        const int x0 = c.x > 0 ? c.x - 1 : 0;
+        const int x1 = c.x + 1 < dims_.x ? c.x + 1 : dims_.x - 1;
+        for (int z = c.z - 1; z <= c.z + 1; ++z) {
+            if (z < 0 || z >= dims_.z) continue;
+            for (int y = c.y - 1; y <= c.y + 1; ++y) {
+                if (y < 0 || y >= dims_.y) continue;
+                const std::uint32_t first = cellIndex({x0, y, z});
+                const std::uint32_t last = cellIndex({x1, y, z});
+                f(cellStart_[first], cellStart_[last + 1]);
+            }
+        }
+    }
+
+private:
+    glm::vec3 origin_{0.0f};
+    float cellSize_ = 1.0f;
+    float invCellSize_ = 1.0f;
+    glm::ivec3 dims_{1, 1, 1};
+    std::vector<std::uint32_t> cellStart_{0, 0};
+    std::vector<std::uint32_t> cellOfParticle_;
+    std::vector<std::uint32_t> sorted_;
+};
+
+}  // namespace tide

@@ -1,0 +1,89 @@
+#include "solvers/classic_muller2003.hpp"
+
+#include <glm/geometric.hpp>
+
+#include "core/kernels.hpp"
+#include "core/parallel.hpp"
+#include "solvers/equation_of_state.hpp"
+#include "solvers/time_step.hpp"
+
+namespace tide {
+
+void ClassicMuller2003::computeDensityAndPressure(StepContext& ctx) const {
+    ParticleStore& p = ctx.particles;
+    const kernels::Poly6 poly6(ctx.supportRadius);
+    const float selfWeight = poly6.valueSq(0.0f);
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+        const glm::vec3 xi = p.position[i];
+        float rho = p.mass[i] * selfWeight;
+        for (const std::uint32_t j : ctx.neighbors.of(i)) {
+            const glm::vec3 d = xi - p.position[j];
+            rho += p.mass[j] * poly6.valueSq(glm::dot(d, d));
+        }
+        float boundaryVolume = 0.0f;
+        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+            const glm::vec3 d = xi - ctx.boundary.position[b];
+            boundaryVolume += ctx.boundary.volume[b] * poly6.valueSq(glm::dot(d, d));
+        }
+        const MaterialDef& mat = ctx.materials[p.material[i]];
+        rho += mat.restDensity * boundaryVolume;  // Akinci et al. 2012, eq. (4), Ψ_b = ρ0_i V_b
+        p.density[i] = rho;
+        p.pressure[i] = pressureFromDensity(ctx.solver.equationOfState, rho, mat.restDensity, ctx.soundSpeed,
+                                            ctx.solver.clampNegativePressure);
+    });
+}
+
+void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
+    ParticleStore& p = ctx.particles;
+    const kernels::Spiky spiky(ctx.supportRadius);
+    const kernels::Viscosity viscosity(ctx.supportRadius);
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+        const glm::vec3 xi = p.position[i];
+        const glm::vec3 vi = p.velocity[i];
+        const float pi = p.pressure[i];
+        const float mui = ctx.materials[p.material[i]].viscosity;
+        glm::vec3 pressureSum(0.0f);
+        glm::vec3 viscousSum(0.0f);
+        for (const std::uint32_t j : ctx.neighbors.of(i)) {
+            const glm::vec3 rij = xi - p.position[j];
+            const float r = glm::length(rij);
+            const float massOverRho = p.mass[j] / p.density[j];
+            // −∇W_spiky = 45/(πh⁶)(h − r)² r̂: positive pressure pushes i away from j.
+            if (r > 0.0f) pressureSum += (massOverRho * 0.5f * (pi + p.pressure[j]) * -spiky.gradientScale(r) / r) * rij;
+            const float muij = 0.5f * (mui + ctx.materials[p.material[j]].viscosity);
+            viscousSum += (massOverRho * muij * viscosity.laplacian(r)) * (p.velocity[j] - vi);
+        }
+        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            const float r = glm::length(rib);
+            if (r > 0.0f) pressureSum += (ctx.boundary.volume[b] * pi * -spiky.gradientScale(r) / r) * rib;
+        }
+        p.acceleration[i] = ctx.gravity + (pressureSum + viscousSum) / p.density[i];
+    });
+}
+
+double ClassicMuller2003::step(StepContext& ctx) {
+    ParticleStore& p = ctx.particles;
+    computeDensityAndPressure(ctx);
+    computeAccelerations(ctx);
+
+    const auto n = p.size();
+    const float maxSpeed2 = parallelMax(n, ctx.threads, [&](std::uint32_t i) {
+        return glm::dot(p.velocity[i], p.velocity[i]);
+    }, 0.0f);
+    const float maxAccel2 = parallelMax(n, ctx.threads, [&](std::uint32_t i) {
+        return glm::dot(p.acceleration[i], p.acceleration[i]);
+    }, 0.0f);
+    float maxNu = 0.0f;
+    for (const MaterialDef& m : ctx.materials) maxNu = std::max(maxNu, m.viscosity / m.restDensity);
+    const double dt = stableTimeStep(ctx.solver, ctx.particleSpacing, ctx.soundSpeed, std::sqrt(maxSpeed2),
+                                     std::sqrt(maxAccel2), maxNu, ctx.maxDt);
+
+    const auto dtf = static_cast<float>(dt);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
+    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph, ctx.threads);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
+    return dt;
+}
+
+}  // namespace tide

@@ -1,0 +1,35 @@
+#pragma once
+/// \file
+/// The seed's solver: weakly compressible SPH after Müller, Charypar & Gross 2003,
+/// "Particle-based fluid simulation for interactive applications" (SCA 2003).
+///   density    ρ_i = Σ_j m_j W_poly6(r_ij)                                  (eq. 3)
+///   pressure   p = κ(ρ − ρ0), κ = c²; or Tait's (Becker & Teschner 2007)    (eq. 12)
+///   a_p,i = −1/ρ_i Σ_j m_j (p_i + p_j)/(2ρ_j) ∇W_spiky(r_ij)                 (eq. 10)
+///   a_v,i = μ_ij/ρ_i Σ_j m_j (v_j − v_i)/ρ_j ∇²W_viscosity(r_ij)            (eq. 14)
+/// Each sum carries the neighbour's own mass (seed eq. 10), so materials of different
+/// rest density and viscosity share one simulation; μ_ij = (μ_i + μ_j)/2 keeps the viscous
+/// force antisymmetric, so momentum is conserved between materials.
+/// Walls are boundary particles that mirror the fluid particle (p_b = p_i, ρ_b = ρ0_i), so
+/// in the pressure sum m_b (p_i + p_b)/(2ρ_b) becomes V_b p_i (Akinci et al. 2012).
+/// Integration is symplectic Euler followed by XSPH smoothing (SolverDef::xsph): the
+/// Poly6-density/Spiky-gradient pair is not the gradient of an energy and, undamped, feeds
+/// noise that grows in confined flows (tests/test_classic_solver.cpp measures it).
+
+#include "solvers/solver.hpp"
+#include "solvers/xsph_monaghan1989.hpp"
+
+namespace tide {
+
+class ClassicMuller2003 final : public Solver {
+public:
+    [[nodiscard]] std::string_view name() const override { return "classic"; }
+    double step(StepContext& ctx) override;
+
+private:
+    void computeDensityAndPressure(StepContext& ctx) const;
+    void computeAccelerations(StepContext& ctx) const;
+
+    XsphFilter xsph_;
+};
+
+}  // namespace tide

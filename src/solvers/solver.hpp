@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// The solver interface: one virtual call per step, plain loops inside. Solvers are
+/// created by name (SolverDef::method) through makeSolver().
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <tide/defs.hpp>
+#include <tide/particles.hpp>
+
+#include "boundary/boundary_particles.hpp"
+#include "neighbors/neighbor_list.hpp"
+
+namespace tide {
+
+/// Everything a solver sees during one step.
+struct StepContext {
+    ParticleStore& particles;
+    const NeighborList& neighbors;
+    std::span<const MaterialDef> materials;
+    const SolverDef& solver;
+    glm::vec3 gravity;
+    float supportRadius;     ///< h, m
+    float particleSpacing;   ///< m
+    float soundSpeed;        ///< c, m/s
+    const BoundaryParticles& boundary;      ///< static walls (may be empty)
+    const NeighborList& boundaryNeighbors;  ///< boundary particles near each fluid particle
+    int threads;
+    double maxDt;            ///< the step may not be longer (e.g. to land on a frame time)
+};
+
+/// A pressure/viscosity solver. step() computes densities and forces for the current
+/// positions, picks a stable dt ≤ ctx.maxDt, and advances velocities and positions.
+/// Boundaries and sources are applied by the World after it returns.
+class Solver {
+public:
+    virtual ~Solver() = default;
+    [[nodiscard]] virtual std::string_view name() const = 0;
+    /// Returns the length of the step taken, s.
+    virtual double step(StepContext& ctx) = 0;
+};
+
+/// Creates the solver called `name`; throws std::invalid_argument for an unknown name.
+std::unique_ptr<Solver> makeSolver(std::string_view name);
+
+}  // namespace tide

@@ -1,0 +1,42 @@
+#pragma once
+/// \file
+/// Cubic-lattice sampling of a box: the particles a block or an emitter layer holds.
+
+#include <cmath>
+#include <cstdint>
+
+#include <glm/vec3.hpp>
+#include <glm/ext/vector_uint3.hpp>
+
+namespace tide {
+
+/// Points min + offset + k·spacing, k in [0, count), centred in [min, max] per axis.
+/// An axis thinner than one spacing (a flat outlet) holds one point at its middle.
+struct Lattice {
+    glm::vec3 first;
+    glm::uvec3 count;
+    float spacing;
+
+    Lattice(const glm::vec3& min, const glm::vec3& max, float spacingIn) : spacing(spacingIn) {
+        for (int axis = 0; axis < 3; ++axis) {
+            const float extent = max[axis] - min[axis];
+            // The small slack absorbs round-off in extents that are whole multiples of the spacing.
+            const auto n = static_cast<std::uint32_t>(std::floor(extent / spacing + 1e-3f));
+            count[axis] = n > 0 ? n : 1;
+            first[axis] = min[axis] + 0.5f * (extent - static_cast<float>(count[axis] - 1) * spacing);
+        }
+    }
+    [[nodiscard]] std::uint64_t size() const {
+        return std::uint64_t{count.x} * count.y * count.z;
+    }
+    /// Calls f(point) for every lattice point, x fastest.
+    template <class F>
+    void forEach(F&& f) const {
+        for (std::uint32_t k = 0; k < count.z; ++k)
+            for (std::uint32_t j = 0; j < count.y; ++j)
+                for (std::uint32_t i = 0; i < count.x; ++i)
+                    f(first + spacing * glm::vec3(static_cast<float>(i), static_cast<float>(j), static_cast<float>(k)));
+    }
+};
+
+}  // namespace tide

@@ -1,0 +1,105 @@
+// The seed's Fluid API (SPEC.md §3), in the seed's own world units.
+#include <cstring>
+#include <stdexcept>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <tide/fluid.hpp>
+
+namespace {
+
+using namespace tide;
+
+void initSeedBox(Fluid& fluid, std::uint32_t capacity = 65535) {
+    fluid.init(capacity, {-20, -20, -20}, {20, 20, 20}, {0, 0, 0}, {0, 0, 0}, {0, -9.81f, 0});
+}
+
+TEST(FluidApi, SeedFreeFallBlockRunsVerbatim) {
+    Fluid fluid;
+    initSeedBox(fluid);
+    ASSERT_TRUE(fluid.addPoint(glm::vec3(-15, -10, -15), glm::vec3(10, 20, 10), glm::vec3(0, 0, 0)));
+    EXPECT_EQ(fluid.getPointCounts(), 25u * 30u * 25u);
+    EXPECT_EQ(fluid.getPointStride(), sizeof(Point));
+    EXPECT_EQ(sizeof(Point), 40u);
+    const float* pos = fluid.getPosData();
+    const Point* points = fluid.getPointBuf();
+    for (unsigned i = 0; i < fluid.getPointCounts(); i += 997) {
+        EXPECT_EQ(pos[3 * i + 1], points[i].pos.y);
+        EXPECT_EQ(fluid.getMaterialIndex(i), 0);
+    }
+    const float topBefore = points[fluid.getPointCounts() - 1].pos.y;
+    fluid.step(1.0f / 30.0f);
+    EXPECT_NEAR(fluid.time(), 1.0 / 30.0, 1e-6);
+    // A block 0.75 m tall in a 1 m tank falls like water: ½ g t² in world units at its top.
+    float top = -1e9f;
+    for (unsigned i = 0; i < fluid.getPointCounts(); ++i) top = std::max(top, fluid.getPosData()[3 * i + 1]);
+    const float drop = topBefore - top;
+    EXPECT_NEAR(drop, 0.5f * 9.81f / 900.0f / 0.025f, 0.3f);
+}
+
+TEST(FluidApi, AddPointBeyondCapacityReturnsFalseAndChangesNothing) {
+    Fluid fluid;
+    initSeedBox(fluid, 1000);
+    ASSERT_TRUE(fluid.addPoint({-20, -20, -20}, {-10, -10, -12}, {0, 0, 0}));  // 10×10×8 = 800
+    const unsigned count = fluid.getPointCounts();
+    const float* pos = fluid.getPosData();
+    std::vector<float> before(pos, pos + 3 * count);
+    EXPECT_FALSE(fluid.addPoint({0, 0, 0}, {5, 5, 10}, {0, 0, 0}));  // 250 more: over 1000
+    EXPECT_EQ(fluid.getPointCounts(), count);
+    EXPECT_EQ(std::memcmp(before.data(), fluid.getPosData(), before.size() * sizeof(float)), 0);
+    EXPECT_TRUE(fluid.addPoint({0, 0, 0}, {5, 5, 8}, {0, 0, 0}));  // exactly 200 more fits
+    EXPECT_EQ(fluid.getPointCounts(), 1000u);
+}
+
+TEST(FluidApi, AddPointOutsideTheWallBoxReturnsFalse) {
+    Fluid fluid;
+    initSeedBox(fluid);
+    EXPECT_FALSE(fluid.addPoint({15, 15, 15}, {25, 25, 25}, {0, 0, 0}));
+    EXPECT_FALSE(fluid.addPointTick({-30, -4, -4}, {-30, 0, 0}, {2, 0, 0}));
+    EXPECT_EQ(fluid.getPointCounts(), 0u);
+}
+
+TEST(FluidApi, MaterialsByValueWithIndices) {
+    Fluid fluid;
+    initSeedBox(fluid);
+    const MaterialIndex heavyOil = fluid.addMaterial(Material(30.0f, 5000.0f, glm::vec3(0.5f, 0.5f, 1.0f)));
+    const MaterialIndex lightOil = fluid.addMaterial(Material(30.0f, 200.0f, glm::vec3(0.5f, 1.0f, 0.5f)));
+    EXPECT_EQ(heavyOil, 1);
+    EXPECT_EQ(lightOil, 2);
+    ASSERT_TRUE(fluid.addPoint({0, 0, 0}, {4, 4, 4}, {0, 0, 0}, lightOil));
+    EXPECT_EQ(fluid.getMaterialIndex(0), lightOil);
+    EXPECT_EQ(fluid.world().materials()[heavyOil].restDensity, 5000.0f);
+    EXPECT_THROW(fluid.addPoint({0, 0, 0}, {4, 4, 4}, {0, 0, 0}, 9), std::invalid_argument);
+    EXPECT_THROW(static_cast<void>(fluid.getMaterialIndex(fluid.getPointCounts())), std::out_of_range);
+    EXPECT_THROW(fluid.addMaterial(Material(-1.0f, 1000.0f, {})), std::invalid_argument);
+}
+
+TEST(FluidApi, ResetEmptiesEverything) {
+    Fluid fluid;
+    fluid.init(5000, {-10, -10, -10}, {10, 10, 10}, {-5, -5, -5}, {5, 5, 5}, {0, -9.81f, 0});
+    EXPECT_EQ(fluid.getPointCounts(), 1000u);
+    fluid.reset();
+    EXPECT_EQ(fluid.getPointCounts(), 0u);
+    EXPECT_FALSE(fluid.addPoint({-5, -5, -5}, {5, 5, 5}, {0, 0, 0}));
+    fluid.step(0.1f);  // harmless when empty
+    EXPECT_EQ(fluid.time(), 0.0);
+}
+
+TEST(FluidApi, BadSettingsAreRejectedByName) {
+    Fluid fluid;
+    FluidSettings settings;
+    settings.metresPerUnit = 0.0f;
+    try {
+        fluid.init(100, {-1, -1, -1}, {1, 1, 1}, {0, 0, 0}, {0, 0, 0}, {0, -9.81f, 0}, settings);
+        FAIL();
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("metresPerUnit"), std::string::npos);
+    }
+    EXPECT_EQ(fluid.getPointCounts(), 0u);
+    EXPECT_THROW(fluid.init(100, {1, -1, -1}, {-1, 1, 1}, {0, 0, 0}, {0, 0, 0}, {0, -9.81f, 0}), std::invalid_argument);
+}
+
+}  // namespace

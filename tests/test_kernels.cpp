@@ -1,0 +1,105 @@
+// Kernel properties: normalisation, gradients and Laplacians against finite differences.
+#include <cmath>
+#include <functional>
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "core/kernels.hpp"
+
+namespace {
+
+using namespace tide::kernels;
+
+/// ∫ W dV = ∫_0^h 4π r² W(r) dr by composite Simpson in double.
+double integrate(const std::function<float(float)>& w, double h, int intervals = 20000) {
+    const double dr = h / intervals;
+    double sum = 0.0;
+    for (int k = 0; k <= intervals; ++k) {
+        const double r = k * dr;
+        const double f = 4.0 * pi * r * r * w(static_cast<float>(r));
+        sum += (k == 0 || k == intervals ? 1.0 : (k % 2 ? 4.0 : 2.0)) * f;
+    }
+    return sum * dr / 3.0;
+}
+
+class KernelNormalisation : public ::testing::TestWithParam<float> {};
+
+TEST_P(KernelNormalisation, EachKernelIntegratesToOne) {
+    const float h = GetParam();
+    EXPECT_NEAR(integrate([&](float r) { return Poly6(h).value(r); }, h), 1.0, 1e-3);
+    EXPECT_NEAR(integrate([&](float r) { return Spiky(h).value(r); }, h), 1.0, 1e-3);
+    EXPECT_NEAR(integrate([&](float r) { return Viscosity(h).value(r); }, h), 1.0, 1e-3);
+    EXPECT_NEAR(integrate([&](float r) { return CubicSpline(h).value(r); }, h), 1.0, 1e-3);
+}
+
+INSTANTIATE_TEST_SUITE_P(SupportRadii, KernelNormalisation, ::testing::Values(0.04f, 1.0f, 2.5f));
+
+/// Checks gradient and Laplacian of a kernel against central differences of its value.
+template <class K>
+void expectDerivativesMatchFiniteDifferences(const K& kernel, float h) {
+    const glm::vec3 directions[] = {{1, 0, 0}, {0.6f, 0.8f, 0}, {0.48f, -0.6f, 0.64f}};
+    for (const glm::vec3& dir : directions) {
+        for (float q : {0.2f, 0.35f, 0.5f, 0.7f, 0.9f}) {
+            const glm::vec3 x = q * h * dir;
+            const float r = glm::length(x);
+            const float e = 1e-3f * h;
+            glm::vec3 fd;
+            float lap = 0.0f;
+            for (int a = 0; a < 3; ++a) {
+                glm::vec3 step(0.0f);
+                step[a] = e;
+                const float plus = kernel.value(glm::length(x + step));
+                const float minus = kernel.value(glm::length(x - step));
+                fd[a] = (plus - minus) / (2.0f * e);
+                const float e2 = 2e-2f * h;  // wider step: a second difference in float needs it
+                step[a] = e2;
+                lap += (kernel.value(glm::length(x + step)) - 2.0f * kernel.value(r) +
+                        kernel.value(glm::length(x - step))) / (e2 * e2);
+            }
+            const glm::vec3 grad = kernel.gradient(x, r);
+            const float scale = glm::length(fd) + 1e-6f * kernel.value(0.01f * h);
+            EXPECT_LT(glm::length(grad - fd), 1e-2f * scale) << "q=" << q;
+            EXPECT_NEAR(kernel.laplacian(r), lap, 2e-2f * std::abs(lap) + 1e-3f * std::abs(kernel.laplacian(0.5f * h)))
+                << "q=" << q;
+        }
+    }
+}
+
+TEST(KernelDerivatives, MatchFiniteDifferences) {
+    for (float h : {1.0f, 0.05f}) {
+        expectDerivativesMatchFiniteDifferences(Poly6(h), h);
+        expectDerivativesMatchFiniteDifferences(Spiky(h), h);
+        expectDerivativesMatchFiniteDifferences(Viscosity(h), h);
+        expectDerivativesMatchFiniteDifferences(CubicSpline(h), h);
+    }
+}
+
+TEST(KernelDerivatives, ViscosityLaplacianIsMuellersForm) {
+    const float h = 0.1f;
+    for (float r : {0.01f, 0.05f, 0.09f})
+        EXPECT_FLOAT_EQ(Viscosity(h).laplacian(r), 45.0f / (pi * std::pow(h, 6.0f)) * (h - r));
+}
+
+TEST(KernelDerivatives, SpikyGradientDoesNotVanishAtZero) {
+    const float h = 0.1f;
+    const float limit = 45.0f / (pi * std::pow(h, 6.0f)) * h * h;
+    const glm::vec3 x(1e-6f * h, 0.0f, 0.0f);
+    EXPECT_GT(glm::length(Spiky(h).gradient(x, glm::length(x))), 0.99f * limit);
+    // Poly6's gradient does vanish there: that is why Müller uses Spiky for pressure.
+    EXPECT_LT(glm::length(Poly6(h).gradient(x, glm::length(x))), 1e-3f * limit);
+}
+
+TEST(KernelSupport, ZeroAtAndBeyondSupport) {
+    const float h = 0.3f;
+    for (float r : {h, 1.5f * h}) {
+        EXPECT_EQ(Poly6(h).value(r), 0.0f);
+        EXPECT_EQ(Spiky(h).value(r), 0.0f);
+        EXPECT_EQ(Viscosity(h).value(r), 0.0f);
+        EXPECT_EQ(CubicSpline(h).value(r), 0.0f);
+        EXPECT_EQ(Viscosity(h).laplacian(r), 0.0f);
+    }
+}
+
+}  // namespace

@@ -1,0 +1,103 @@
+// Grid + CSR neighbour lists against brute force, including cell borders and r == h.
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "neighbors/neighbor_list.hpp"
+#include "neighbors/uniform_grid.hpp"
+
+namespace {
+
+using tide::NeighborList;
+using tide::UniformGrid;
+
+std::vector<glm::vec3> testPoints(float h) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-1.0f, 2.0f);
+    std::vector<glm::vec3> points;
+    for (int i = 0; i < 3000; ++i) points.emplace_back(u(rng), u(rng), 0.5f * u(rng));
+    // Exactly representable points on cell borders, and pairs exactly h apart (h = 0.25).
+    for (int i = -4; i <= 8; ++i)
+        for (int j = -4; j <= 8; ++j) points.emplace_back(h * i, h * j, h * ((i + j) % 3));
+    points.emplace_back(0.5f, 0.5f, 0.5f);
+    points.emplace_back(0.5f, 0.5f, 0.5f);  // a duplicate: distance 0
+    return points;
+}
+
+std::vector<std::uint32_t> bruteForce(const std::vector<glm::vec3>& x, std::uint32_t i, float h) {
+    std::vector<std::uint32_t> out;
+    for (std::uint32_t j = 0; j < x.size(); ++j) {
+        const glm::vec3 d = x[i] - x[j];
+        if (j != i && d.x * d.x + d.y * d.y + d.z * d.z <= h * h) out.push_back(j);
+    }
+    return out;
+}
+
+TEST(Neighbors, MatchBruteForceIncludingBordersAndExactDistance) {
+    const float h = 0.25f;
+    const auto x = testPoints(h);
+    UniformGrid grid;
+    grid.build(x, h, 2);
+    NeighborList list;
+    list.build(grid, x, h, 2);
+    std::uint64_t exactlyH = 0;
+    for (std::uint32_t i = 0; i < x.size(); ++i) {
+        auto found = std::vector<std::uint32_t>(list.of(i).begin(), list.of(i).end());
+        std::sort(found.begin(), found.end());
+        ASSERT_EQ(found, bruteForce(x, i, h)) << "particle " << i;
+        for (auto j : found) exactlyH += glm::length(x[i] - x[j]) == h;
+    }
+    EXPECT_GT(exactlyH, 100u) << "the test set must contain pairs exactly h apart";
+}
+
+TEST(Neighbors, SameListsForOneAndTwoThreads) {
+    const float h = 0.25f;
+    const auto x = testPoints(h);
+    UniformGrid g1, g2;
+    g1.build(x, h, 1);
+    g2.build(x, h, 2);
+    NeighborList l1, l2;
+    l1.build(g1, x, h, 1);
+    l2.build(g2, x, h, 2);
+    ASSERT_EQ(l1.pairCount(), l2.pairCount());
+    for (std::uint32_t i = 0; i < x.size(); ++i)
+        ASSERT_TRUE(std::ranges::equal(l1.of(i), l2.of(i))) << "particle " << i;
+}
+
+TEST(Neighbors, CrossSetQueryMatchesBruteForce) {
+    const float h = 0.3f;
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::vector<glm::vec3> sources, queries;
+    for (int i = 0; i < 800; ++i) sources.emplace_back(u(rng), u(rng), u(rng));
+    for (int i = 0; i < 300; ++i) queries.emplace_back(u(rng), u(rng), u(rng));
+    UniformGrid grid;
+    grid.build(sources, h, 2);
+    NeighborList list;
+    list.build(grid, sources, queries, h, 2, false);
+    for (std::uint32_t i = 0; i < queries.size(); ++i) {
+        std::vector<std::uint32_t> expected;
+        for (std::uint32_t j = 0; j < sources.size(); ++j)
+            if (glm::dot(queries[i] - sources[j], queries[i] - sources[j]) <= h * h) expected.push_back(j);
+        auto found = std::vector<std::uint32_t>(list.of(i).begin(), list.of(i).end());
+        std::sort(found.begin(), found.end());
+        ASSERT_EQ(found, expected);
+    }
+}
+
+TEST(Neighbors, FarStrayParticleDoesNotBlowUpTheGrid) {
+    std::vector<glm::vec3> x = {{0, 0, 0}, {0.01f, 0, 0}, {1e6f, 1e6f, 1e6f}};
+    UniformGrid grid;
+    grid.build(x, 0.02f, 1);
+    EXPECT_LE(grid.cellCount(), 8u * 3u + 4096u);
+    NeighborList list;
+    list.build(grid, x, 0.02f, 1);
+    EXPECT_EQ(list.of(0).size(), 1u);
+    EXPECT_EQ(list.of(2).size(), 0u);
+}
+
+}  // namespace
