@@ -2,7 +2,7 @@
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
-DEMO_SECONDS ?= 4
+DEMO_SECONDS ?= 1
 
 .PHONY: all deps configure build demo test bench clean
 
@@ -19,7 +19,7 @@ build: configure
 
 # The default scene: the seed's free-fall demo through the Fluid API, headless.
 demo: build
-	@$(BUILD_DIR)/bin/free_fall --seconds $(DEMO_SECONDS)
+	@$(BUILD_DIR)/bin/free_fall --seconds $(DEMO_SECONDS) --every 0.1
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

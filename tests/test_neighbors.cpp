@@ -22,7 +22,8 @@ std::vector<glm::vec3> testPoints(float h) {
     for (int i = 0; i < 3000; ++i) points.emplace_back(u(rng), u(rng), 0.5f * u(rng));
     // Exactly representable points on cell borders, and pairs exactly h apart (h = 0.25).
     for (int i = -4; i <= 8; ++i)
-        for (int j = -4; j <= 8; ++j) points.emplace_back(h * i, h * j, h * ((i + j) % 3));
+        for (int j = -4; j <= 8; ++j)
+            for (int k = 0; k < 3; ++k) points.emplace_back(h * i, h * j, h * k);
     points.emplace_back(0.5f, 0.5f, 0.5f);
     points.emplace_back(0.5f, 0.5f, 0.5f);  // a duplicate: distance 0
     return points;

@@ -18,7 +18,7 @@ inline int resolveThreadCount(int requested) {
 }
 
 /// Below this many indices a loop runs serially: the fork costs more than it saves.
-inline constexpr std::uint32_t kParallelGrain = 2048;
+inline constexpr std::uint32_t kParallelGrain = 256;
 
 /// Call f(i) for i in [0, n) on `threads` threads.
 template <class F>

@@ -36,7 +36,7 @@ public:
 private:
     std::vector<std::uint64_t> offsets_{0};
     std::vector<std::uint32_t> indices_;
-    std::vector<std::uint32_t> counts_;
+    std::vector<std::vector<std::uint32_t>> chunkBuffers_;  ///< per-thread scratch, kept between builds
 };
 
 }  // namespace tide

@@ -11,6 +11,9 @@
 /// force antisymmetric, so momentum is conserved between materials.
 /// Walls are boundary particles that mirror the fluid particle (p_b = p_i, ρ_b = ρ0_i), so
 /// in the pressure sum m_b (p_i + p_b)/(2ρ_b) becomes V_b p_i (Akinci et al. 2012).
+/// Known flaw kept for fidelity: the (p_i + p_j)/2 symmetrisation is half the true pressure
+/// gradient in the bulk (Σ_j V_j (p_j − p_i)/2 ∇W ≈ ∇p/2), so at rest the pressure is
+/// 2ρg·depth and the compression twice that of a consistent scheme (the `wcsph` solver).
 /// Integration is symplectic Euler followed by XSPH smoothing (SolverDef::xsph): the
 /// Poly6-density/Spiky-gradient pair is not the gradient of an energy and, undamped, feeds
 /// noise that grows in confined flows (tests/test_classic_solver.cpp measures it).
