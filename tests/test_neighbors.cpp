@@ -79,7 +79,7 @@ TEST(Neighbors, CrossSetQueryMatchesBruteForce) {
     UniformGrid grid;
     grid.build(sources, h, 2);
     NeighborList list;
-    list.build(grid, sources, queries, h, 2, false);
+    list.buildCross(grid, sources, queries, h, 2);
     for (std::uint32_t i = 0; i < queries.size(); ++i) {
         std::vector<std::uint32_t> expected;
         for (std::uint32_t j = 0; j < sources.size(); ++j)

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
-#include <sstream>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -145,7 +143,7 @@ struct World::Impl {
             stepsSinceReorder = 0;
         }
         neighbors.build(grid, particles.position, h, threads);
-        boundaryNeighbors.build(boundary.grid, boundary.position, particles.position, h, threads, false);
+        boundaryNeighbors.buildCross(boundary.grid, boundary.position, particles.position, h, threads);
     }
 
     void emit(double t0, double dt) {

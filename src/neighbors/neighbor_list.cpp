@@ -7,57 +7,142 @@
 namespace tide {
 
 namespace {
-/// Appends to `out` every grid point j within the radius of xi, in the grid's fixed order,
-/// skipping j == skip. Branch-free: every candidate is written and the end advances only
-/// for hits, since about 15 % of candidates are hits and a branch on them mispredicts.
-void appendNeighbors(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius2,
-                     const glm::vec3& xi, std::uint32_t skip, std::vector<std::uint32_t>& out) {
-    const auto sorted = grid.sortedParticles();
-    grid.forEachNeighborRun(grid.cellOf(xi), [&](std::uint32_t begin, std::uint32_t end) {
+
+/// Candidates of one cell's 3×3×3 neighbourhood, copied into contiguous SoA arrays so the
+/// distance test over them vectorises and is shared by every particle of the cell.
+struct CandidateSet {
+    std::vector<float> x, y, z;
+    std::vector<std::uint32_t> index;
+
+    void gather(const UniformGrid& grid, std::span<const glm::vec3> positions, const glm::ivec3& cell) {
+        x.clear();
+        y.clear();
+        z.clear();
+        index.clear();
+        const auto sorted = grid.sortedParticles();
+        grid.forEachNeighborRun(cell, [&](std::uint32_t begin, std::uint32_t end) {
+            for (std::uint32_t k = begin; k < end; ++k) {
+                const std::uint32_t j = sorted[k];
+                x.push_back(positions[j].x);
+                y.push_back(positions[j].y);
+                z.push_back(positions[j].z);
+                index.push_back(j);
+            }
+        });
+    }
+
+    /// Appends to `out` the candidates within the radius of q, skipping `skip`. Branch-free:
+    /// every candidate is written and the end advances only for hits (~15 % of candidates,
+    /// so a branch on them would mispredict).
+    void appendWithin(const glm::vec3& q, float radius2, std::uint32_t skip, std::vector<std::uint32_t>& out) const {
         std::size_t size = out.size();
-        out.resize(size + (end - begin));
+        out.resize(size + index.size());
         std::uint32_t* dst = out.data();
-        for (std::uint32_t k = begin; k < end; ++k) {
-            const std::uint32_t j = sorted[k];
-            const glm::vec3 d = xi - positions[j];
-            dst[size] = j;
-            size += static_cast<std::size_t>((d.x * d.x + d.y * d.y + d.z * d.z <= radius2) & (j != skip));
+        for (std::size_t t = 0; t < index.size(); ++t) {
+            const float dx = q.x - x[t], dy = q.y - y[t], dz = q.z - z[t];
+            dst[size] = index[t];
+            size += static_cast<std::size_t>((dx * dx + dy * dy + dz * dz <= radius2) & (index[t] != skip));
         }
         out.resize(size);
-    });
-}
+    }
+};
+
+constexpr std::uint32_t kNone = 0xffffffffu;
+
 }  // namespace
 
-void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
-                         std::span<const glm::vec3> queries, float radius, int threads, bool excludeSelf) {
-    const auto n = static_cast<std::uint32_t>(queries.size());
-    constexpr std::uint32_t kNone = 0xffffffffu;
+template <class ForEachParticleOfChunk>
+void NeighborList::concatenateChunks(int chunks, ForEachParticleOfChunk&& forEachParticleOfChunk) {
+    std::vector<std::uint64_t> base(static_cast<std::size_t>(chunks) + 1, 0);
+    for (int c = 0; c < chunks; ++c) base[c + 1] = base[c] + chunkBuffers_[static_cast<std::size_t>(c)].size();
+    indices_.resize(base[chunks]);
+#pragma omp parallel for schedule(static, 1) num_threads(chunks)
+    for (int c = 0; c < chunks; ++c) {
+        const auto& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
+        std::copy(buffer.begin(), buffer.end(), indices_.begin() + static_cast<std::ptrdiff_t>(base[c]));
+        forEachParticleOfChunk(c, [&](std::uint32_t i) { begin_[i] += base[c]; });
+    }
+}
+
+void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads) {
+    const auto n = static_cast<std::uint32_t>(positions.size());
     const float radius2 = radius * radius;
-    // One pass: each thread lists a contiguous range of particles into its own buffer, then
-    // the buffers are copied behind each other. Per-particle lists do not depend on the
-    // thread count, so the result is identical for any number of threads.
+    begin_.resize(n);
+    count_.resize(n);
+    // Cells are split into one contiguous range per thread, balanced by particle count.
+    const int chunks = n >= kParallelGrain ? threads : 1;
+    const std::uint32_t cells = grid.cellCount();
+    std::vector<std::uint32_t> firstCell(static_cast<std::size_t>(chunks) + 1, cells);
+    for (int c = 0; c < chunks; ++c) {
+        std::uint32_t lo = 0, hi = cells;  // first cell whose start ≥ the chunk's share
+        const auto share = static_cast<std::uint32_t>(std::uint64_t{n} * c / chunks);
+        while (lo < hi) {
+            const std::uint32_t mid = lo + (hi - lo) / 2;
+            if (grid.cellStart(mid) < share) lo = mid + 1; else hi = mid;
+        }
+        firstCell[c] = c == 0 ? 0 : lo;
+    }
+    chunkBuffers_.resize(static_cast<std::size_t>(chunks));
+    const auto sorted = grid.sortedParticles();
+    const glm::ivec3 dims = grid.dims();
+    auto forEachCell = [&](int c, auto&& f) {
+        for (std::uint32_t cell = firstCell[c]; cell < firstCell[c + 1]; ++cell)
+            if (grid.cellStart(cell) < grid.cellStart(cell + 1)) f(cell);
+    };
+#pragma omp parallel for schedule(static, 1) num_threads(chunks)
+    for (int c = 0; c < chunks; ++c) {
+        std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
+        buffer.clear();
+        CandidateSet candidates;
+        forEachCell(c, [&](std::uint32_t cell) {
+            const auto cx = static_cast<int>(cell % static_cast<std::uint32_t>(dims.x));
+            const auto cy = static_cast<int>((cell / static_cast<std::uint32_t>(dims.x)) % static_cast<std::uint32_t>(dims.y));
+            const auto cz = static_cast<int>(cell / (static_cast<std::uint32_t>(dims.x) * static_cast<std::uint32_t>(dims.y)));
+            candidates.gather(grid, positions, {cx, cy, cz});
+            for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) {
+                const std::uint32_t i = sorted[k];
+                begin_[i] = buffer.size();
+                candidates.appendWithin(positions[i], radius2, i, buffer);
+                count_[i] = static_cast<std::uint32_t>(buffer.size() - begin_[i]);
+            }
+        });
+    }
+    concatenateChunks(chunks, [&](int c, auto&& f) {
+        forEachCell(c, [&](std::uint32_t cell) {
+            for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) f(sorted[k]);
+        });
+    });
+}
+
+void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
+                              std::span<const glm::vec3> queries, float radius, int threads) {
+    const auto n = static_cast<std::uint32_t>(queries.size());
+    const float radius2 = radius * radius;
+    begin_.resize(n);
+    count_.resize(n);
     const int chunks = n >= kParallelGrain ? threads : 1;
     chunkBuffers_.resize(static_cast<std::size_t>(chunks));
-    offsets_.resize(static_cast<std::size_t>(n) + 1);
     auto chunkBegin = [&](int c) { return static_cast<std::uint32_t>(std::uint64_t{n} * c / chunks); };
+    const auto sorted = grid.sortedParticles();
 #pragma omp parallel for schedule(static, 1) num_threads(chunks)
     for (int c = 0; c < chunks; ++c) {
         std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
         buffer.clear();
         for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
-            const auto before = buffer.size();
-            appendNeighbors(grid, gridPositions, radius2, queries[i], excludeSelf ? i : kNone, buffer);
-            offsets_[i + 1] = buffer.size() - before;  // a count for now
+            begin_[i] = buffer.size();
+            const glm::vec3 q = queries[i];
+            grid.forEachNeighborRun(grid.cellOf(q), [&](std::uint32_t first, std::uint32_t last) {
+                for (std::uint32_t k = first; k < last; ++k) {
+                    const glm::vec3 d = q - gridPositions[sorted[k]];
+                    if (d.x * d.x + d.y * d.y + d.z * d.z <= radius2) buffer.push_back(sorted[k]);
+                }
+            });
+            count_[i] = static_cast<std::uint32_t>(buffer.size() - begin_[i]);
         }
     }
-    offsets_[0] = 0;
-    for (std::uint32_t i = 0; i < n; ++i) offsets_[i + 1] += offsets_[i];
-    indices_.resize(offsets_[n]);
-#pragma omp parallel for schedule(static, 1) num_threads(chunks)
-    for (int c = 0; c < chunks; ++c) {
-        const auto& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
-        std::copy(buffer.begin(), buffer.end(), indices_.begin() + static_cast<std::ptrdiff_t>(offsets_[chunkBegin(c)]));
-    }
+    concatenateChunks(chunks, [&](int c, auto&& f) {
+        for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) f(i);
+    });
 }
 
 }  // namespace tide
