@@ -2,7 +2,7 @@
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
-DEMO_SECONDS ?= 1
+DEMO_SECONDS ?= 2
 
 .PHONY: all deps configure build demo test bench clean
 
@@ -17,9 +17,9 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# The default scene: the seed's free-fall demo through the Fluid API, headless.
+# The default scene (the seed's free-fall demo) through `tide run`, frames in out/demo.
 demo: build
-	@$(BUILD_DIR)/bin/free_fall --seconds $(DEMO_SECONDS) --every 0.1
+	@$(BUILD_DIR)/bin/tide run scenes/free_fall.json --out out/demo --force --end-time $(DEMO_SECONDS)
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

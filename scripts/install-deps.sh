@@ -3,7 +3,10 @@
 # quiet when everything is present.
 set -euo pipefail
 
-packages=(cmake make g++ libglm-dev libgtest-dev libgmock-dev libbenchmark-dev)
+# build: compiler, CMake, GLM, JSON, CLI11; tests: GoogleTest, meshio (reads our VTU
+# frames), script (a pseudo-terminal); benchmarks: Google Benchmark.
+packages=(cmake make g++ libglm-dev nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
+          python3-meshio bsdutils)
 
 missing=()
 for pkg in "${packages[@]}"; do

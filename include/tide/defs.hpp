@@ -61,6 +61,16 @@ struct WorldDef {
     SolverDef solver;
 };
 
+/// A fixed solid the fluid flows around, sampled as boundary particles.
+struct ObstacleDef {
+    enum class Shape { Box, Sphere };
+    Shape shape = Shape::Box;
+    glm::vec3 min{0.0f};     ///< box corner, m
+    glm::vec3 max{0.0f};     ///< box corner, m
+    glm::vec3 center{0.0f};  ///< sphere centre, m
+    float radius = 0.0f;     ///< sphere radius, m
+};
+
 /// A box filled with particles on a cubic lattice.
 struct BlockDef {
     glm::vec3 min{0.0f};

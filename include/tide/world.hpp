@@ -3,6 +3,7 @@
 /// tide::World — one simulation: particles, materials, sources and a solver.
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -27,6 +28,12 @@ struct WorldStats {
     float meanDensityError = 0.0f;      ///< mean |ρ − ρ0| / ρ0 over all particles, last step
     float meanCompression = 0.0f;       ///< mean max(ρ − ρ0, 0) / ρ0 (SPlisHSPlasH's measure)
     std::uint64_t emitterCapacityHits = 0;  ///< layers an emitter could not emit: world full
+    // Running totals over every step since creation:
+    double dtMin = 0.0;                 ///< s, shortest step (0 before the first)
+    double dtMax = 0.0;                 ///< s, longest step
+    double dtSum = 0.0;                 ///< s, simulated time stepped
+    float maxMeanDensityError = 0.0f;   ///< largest per-step meanDensityError
+    double sumMeanDensityError = 0.0;   ///< Σ over steps of meanDensityError (÷ steps = average)
 };
 
 /// Names of the solvers World accepts in SolverDef::method.
@@ -51,13 +58,20 @@ public:
     /// Mass of one particle of a material, kg (ρ0 times the volume a lattice particle fills).
     [[nodiscard]] float particleMass(MaterialIndex material) const;
 
-    /// Fill a box with particles on a lattice of the world's spacing, centred in the box.
-    /// Adds all of them or none (see AddStatus).
+    /// Fill a box with particles on a lattice of the world's spacing, centred in the box,
+    /// leaving out points inside obstacles. Adds all of them or none (see AddStatus).
     AddStatus addBlock(const BlockDef& block);
     /// Whether a box lies inside the container (always true without walls).
     [[nodiscard]] bool insideDomain(const glm::vec3& min, const glm::vec3& max) const;
     /// Number of particles addBlock(block) would add.
     [[nodiscard]] std::uint32_t countBlock(const BlockDef& block) const;
+
+    /// Add a fixed obstacle (sampled as boundary particles). Add obstacles before blocks:
+    /// blocks leave out the lattice points that fall inside an obstacle.
+    void addObstacle(const ObstacleDef& obstacle);
+    [[nodiscard]] const std::vector<ObstacleDef>& obstacles() const;
+    /// Particles outside the container or inside an obstacle: should always be 0.
+    [[nodiscard]] std::uint32_t countEscapedParticles() const;
 
     /// Add a continuous source; returns its index for setEmitterActive().
     std::uint32_t addEmitter(const EmitterDef& emitter);
@@ -67,8 +81,9 @@ public:
 
     /// Take one time step of adaptive length, at most maxDt seconds; returns its length.
     double step(double maxDt);
-    /// Advance exactly `duration` seconds in as many adaptive steps as needed.
-    void advance(double duration);
+    /// Advance exactly `duration` seconds in as many adaptive steps as needed, calling
+    /// `afterStep` (if given) after each one, e.g. to report progress.
+    void advance(double duration, const std::function<void()>& afterStep = {});
 
     [[nodiscard]] double time() const;
     [[nodiscard]] const ParticleStore& particles() const;

@@ -45,4 +45,10 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
     grid.build(position, searchRadius, threads);
 }
 
+void BoundaryParticles::add(std::span<const glm::vec3> points, float particleVolume, float searchRadius, int threads) {
+    position.insert(position.end(), points.begin(), points.end());
+    volume.resize(position.size(), particleVolume);
+    grid.build(position, searchRadius, threads);
+}
+
 }  // namespace tide

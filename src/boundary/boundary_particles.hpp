@@ -13,6 +13,7 @@
 /// a block of fluid resting against a wall, edge or corner then has exactly rest density.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -28,6 +29,9 @@ public:
     /// every particle gets `volume` (m³).
     void sampleBoxShell(const glm::vec3& min, const glm::vec3& max, float spacing, int layers, float volume,
                         float searchRadius, int threads);
+
+    /// Add more boundary particles (an obstacle), each of `volume` m³, and rebuild the grid.
+    void add(std::span<const glm::vec3> points, float volume, float searchRadius, int threads);
 
     [[nodiscard]] std::uint32_t size() const { return static_cast<std::uint32_t>(position.size()); }
 

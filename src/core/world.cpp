@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "boundary/boundary_particles.hpp"
+#include "boundary/obstacles.hpp"
 #include "boundary/wall_box.hpp"
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
@@ -86,6 +87,7 @@ struct World::Impl {
     NeighborList boundaryNeighbors;
     std::unique_ptr<Solver> solver;
     std::vector<EmitterState> emitters;
+    std::vector<ObstacleDef> obstacles;
     double time = 0.0;
     float soundSpeed = 0.0f;  ///< resolved at the first step when SolverDef::soundSpeed is 0
     int stepsSinceReorder = 0;
@@ -114,10 +116,26 @@ struct World::Impl {
         return true;
     }
 
+    /// Whether a lattice point is clear of every obstacle (by the half spacing a particle fills).
+    [[nodiscard]] bool clearOfObstacles(const glm::vec3& x) const {
+        for (const ObstacleDef& o : obstacles)
+            if (signedDistance(o, x) < 0.499f * def.particleSpacing) return false;
+        return true;
+    }
+
+    [[nodiscard]] std::uint64_t countLattice(const Lattice& lattice) const {
+        if (obstacles.empty()) return lattice.size();
+        std::uint64_t n = 0;
+        lattice.forEach([&](const glm::vec3& x) { n += clearOfObstacles(x); });
+        return n;
+    }
+
     void appendLattice(const Lattice& lattice, const glm::vec3& velocity, MaterialIndex material) {
         const float m = massOf(material);
         const float rho0 = materials[material].restDensity;
-        lattice.forEach([&](const glm::vec3& x) { particles.append(x, velocity, m, material, rho0); });
+        lattice.forEach([&](const glm::vec3& x) {
+            if (clearOfObstacles(x)) particles.append(x, velocity, m, material, rho0);
+        });
     }
 
     /// The speed of sound: given, or 10 × the fastest speed the scene can reach by falling
@@ -149,7 +167,7 @@ struct World::Impl {
     void emit(double t0, double dt) {
         for (EmitterState& emitter : emitters) {
             emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
-                if (particles.size() + layer.size() > def.capacity) {
+                if (particles.size() + countLattice(layer) > def.capacity) {
                     ++stats.emitterCapacityHits;
                     return;
                 }
@@ -161,6 +179,9 @@ struct World::Impl {
     void updateStats(double dt) {
         ++stats.steps;
         stats.lastDt = dt;
+        stats.dtMin = stats.steps == 1 ? dt : std::min(stats.dtMin, dt);
+        stats.dtMax = std::max(stats.dtMax, dt);
+        stats.dtSum += dt;
         double errorSum = 0.0, compressionSum = 0.0, maxSpeed2 = 0.0;
         for (std::uint32_t i = 0; i < particles.size(); ++i) {
             const double rho0 = materials[particles.material[i]].restDensity;
@@ -173,6 +194,8 @@ struct World::Impl {
         stats.meanDensityError = static_cast<float>(errorSum / n);
         stats.meanCompression = static_cast<float>(compressionSum / n);
         stats.maxSpeed = static_cast<float>(std::sqrt(maxSpeed2));
+        stats.maxMeanDensityError = std::max(stats.maxMeanDensityError, stats.meanDensityError);
+        stats.sumMeanDensityError += stats.meanDensityError;
     }
 };
 
@@ -217,7 +240,7 @@ bool World::insideDomain(const glm::vec3& min, const glm::vec3& max) const {
 
 std::uint32_t World::countBlock(const BlockDef& block) const {
     const Lattice lattice(block.min, block.max, impl_->def.particleSpacing);
-    return static_cast<std::uint32_t>(std::min<std::uint64_t>(lattice.size(), 0xffffffffu));
+    return static_cast<std::uint32_t>(std::min<std::uint64_t>(impl_->countLattice(lattice), 0xffffffffu));
 }
 
 AddStatus World::addBlock(const BlockDef& block) {
@@ -226,9 +249,37 @@ AddStatus World::addBlock(const BlockDef& block) {
         throw std::invalid_argument("block.material: no material " + std::to_string(block.material));
     const Lattice lattice(block.min, block.max, impl_->def.particleSpacing);
     if (!impl_->insideDomain(lattice)) return AddStatus::OutsideDomain;
-    if (impl_->particles.size() + lattice.size() > impl_->def.capacity) return AddStatus::OverCapacity;
+    if (impl_->particles.size() + impl_->countLattice(lattice) > impl_->def.capacity) return AddStatus::OverCapacity;
     impl_->appendLattice(lattice, block.velocity, block.material);
     return AddStatus::Added;
+}
+
+void World::addObstacle(const ObstacleDef& obstacle) {
+    Impl& w = *impl_;
+    if (obstacle.shape == ObstacleDef::Shape::Sphere) {
+        for (int axis = 0; axis < 3; ++axis) requireFinite("obstacle.center", obstacle.center[axis]);
+        requirePositive("obstacle.radius", obstacle.radius);
+    } else {
+        validateBox("obstacle", obstacle.min, obstacle.max);
+    }
+    const auto points = sampleObstacle(obstacle, w.def.domainMin, w.def.particleSpacing, w.h);
+    w.boundary.add(points, 1.0f / w.latticeSum, w.h, w.threads);
+    w.obstacles.push_back(obstacle);
+}
+
+const std::vector<ObstacleDef>& World::obstacles() const { return impl_->obstacles; }
+
+std::uint32_t World::countEscapedParticles() const {
+    const Impl& w = *impl_;
+    std::uint32_t escaped = 0;
+    for (const glm::vec3& x : w.particles.position) {
+        bool out = false;
+        for (int axis = 0; axis < 3 && w.def.walls; ++axis)
+            out = out || !(x[axis] >= w.def.domainMin[axis] && x[axis] <= w.def.domainMax[axis]);
+        for (const ObstacleDef& o : w.obstacles) out = out || signedDistance(o, x) < 0.0f;
+        escaped += out;
+    }
+    return escaped;
 }
 
 std::uint32_t World::addEmitter(const EmitterDef& emitter) {
@@ -266,18 +317,22 @@ double World::step(double maxDt) {
         const WallBox walls{w.def.domainMin, w.def.domainMax, 0.5f * w.def.particleSpacing, w.def.wallRestitution};
         walls.enforce(w.particles, w.threads);
     }
+    projectOutOfObstacles(w.obstacles, w.particles, 0.5f * w.def.particleSpacing, w.threads);
     w.updateStats(dt);
     w.emit(w.time, dt);
     w.time += dt;
     return dt;
 }
 
-void World::advance(double duration) {
+void World::advance(double duration, const std::function<void()>& afterStep) {
     if (!(duration >= 0.0) || !std::isfinite(duration))
         throw std::invalid_argument("duration: must be finite and >= 0, got " + std::to_string(duration));
     const double end = impl_->time + duration;
     // Steps shorter than a nanosecond only chase round-off.
-    while (end - impl_->time > 1e-9) step(end - impl_->time);
+    while (end - impl_->time > 1e-9) {
+        step(end - impl_->time);
+        if (afterStep) afterStep();
+    }
     impl_->time = std::max(impl_->time, end);
 }
 

@@ -1,0 +1,29 @@
+#pragma once
+// The `tide` command line: its subcommands and their options.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tide::cli {
+
+/// Exit codes: 0 success, 1 a run that failed (e.g. diverged), 2 bad input.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitRunFailed = 1;
+inline constexpr int kExitBadInput = 2;
+
+struct RunOptions {
+    std::string scene;
+    std::string out;                      ///< empty: out/<scene file stem>
+    std::optional<double> endTime;
+    int threads = 0;
+    std::vector<std::string> formats;     ///< empty: the scene's
+    std::string solver;                   ///< empty: the scene's
+    bool force = false;
+    bool quiet = false;
+};
+
+int runCommand(const RunOptions& options);
+int validateCommand(const std::string& scene);
+
+}  // namespace tide::cli

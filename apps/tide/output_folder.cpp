@@ -1,0 +1,38 @@
+#include "output_folder.hpp"
+
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace tide::cli {
+
+namespace fs = std::filesystem;
+
+bool isRunOutput(const fs::path& file) {
+    static const std::regex frame(R"(frame_\d{5,}\.(vtu|ply|csv))");
+    const std::string name = file.filename().string();
+    return name == "frames.pvd" || name == "stats.json" || std::regex_match(name, frame);
+}
+
+void prepareOutputFolder(const fs::path& dir, bool force) {
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+        throw OutputFolderError("--out " + dir.string() + ": exists and is not a folder");
+    fs::create_directories(dir, ec);
+    if (ec) throw OutputFolderError("--out " + dir.string() + ": cannot create the folder (" + ec.message() + ")");
+    std::vector<fs::path> ours;
+    bool others = false;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        if (isRunOutput(entry.path())) ours.push_back(entry.path());
+        else others = true;
+    }
+    if (ours.empty() && !others) return;
+    if (!force) {
+        throw OutputFolderError("--out " + dir.string() + ": the folder is not empty" +
+                                (ours.empty() ? std::string() : " (it holds another run)") +
+                                "; choose another folder or pass --force to replace that run's files");
+    }
+    for (const fs::path& file : ours) fs::remove(file, ec);
+}
+
+}  // namespace tide::cli

@@ -1,0 +1,44 @@
+// `tide validate`: check a scene and say what it would simulate.
+#include <cstdio>
+
+#include <tide/io/scene.hpp>
+
+#include "commands.hpp"
+
+namespace tide::cli {
+
+int validateCommand(const std::string& file) {
+    io::Scene scene;
+    try {
+        scene = io::loadScene(file);
+    } catch (const io::SceneError& e) {
+        for (const std::string& problem : e.problems) {
+            if (problem.rfind(file, 0) == 0) std::fprintf(stderr, "%s\n", problem.c_str());
+            else std::fprintf(stderr, "%s: %s\n", file.c_str(), problem.c_str());
+        }
+        std::fprintf(stderr, "%s: %zu problem%s\n", file.c_str(), e.problems.size(), e.problems.size() == 1 ? "" : "s");
+        return kExitBadInput;
+    }
+    const io::SceneEstimate size = io::estimate(scene);
+    const WorldDef& w = scene.world;
+    std::printf("scene      %s (%s)\n", scene.name.empty() ? "(unnamed)" : scene.name.c_str(), file.c_str());
+    std::printf("domain     [%g, %g, %g] .. [%g, %g, %g] m, particle spacing %g m, kernel support %g m\n",
+                w.domainMin.x, w.domainMin.y, w.domainMin.z, w.domainMax.x, w.domainMax.y, w.domainMax.z,
+                w.particleSpacing, w.particleSpacing * w.supportRatio);
+    std::printf("solver     %s, end time %g s, %d frames at %g fps\n", w.solver.method.c_str(), scene.endTime,
+                static_cast<int>(scene.endTime * scene.output.fps + 1e-9) + 1, scene.output.fps);
+    std::printf("materials\n");
+    for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+        const MaterialDef& mat = scene.materials[m];
+        std::printf("  %-16s %8g kg/m3 %10g Pa s %10llu particles in blocks, %llu emitted\n", mat.name.c_str(),
+                    mat.restDensity, mat.viscosity, static_cast<unsigned long long>(size.initialParticles[m]),
+                    static_cast<unsigned long long>(size.emittedParticles[m]));
+    }
+    std::printf("obstacles  %zu, emitters %zu\n", scene.obstacles.size(), scene.emitters.size());
+    std::printf("total      up to %llu particles, about %.1f MiB\n",
+                static_cast<unsigned long long>(size.totalParticles), static_cast<double>(size.bytes) / (1 << 20));
+    std::printf("ok\n");
+    return kExitOk;
+}
+
+}  // namespace tide::cli

@@ -1,0 +1,67 @@
+#pragma once
+/// \file
+/// Scenes in files (JSON, SI units; see docs/scene-format.md and scenes/scene.schema.json).
+/// Parsing reports every problem it finds, each naming its JSON path and value, and never
+/// fills in a silent default for a misspelled key.
+
+#include <cstdint>
+#include <filesystem>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <tide/defs.hpp>
+#include <tide/io/exporters.hpp>
+#include <tide/world.hpp>
+
+namespace tide::io {
+
+/// What `tide run` writes and how often.
+struct OutputDef {
+    double fps = 30.0;                        ///< frames per simulated second
+    std::vector<Format> formats{Format::Vtu};
+};
+
+/// A parsed, validated scene. Lengths are already scaled to metres (`unit_scale`).
+struct Scene {
+    std::string name;
+    WorldDef world;
+    double endTime = 1.0;                     ///< s
+    std::vector<MaterialDef> materials;
+    std::vector<ObstacleDef> obstacles;
+    std::vector<BlockDef> blocks;             ///< material indices resolved from names
+    std::vector<EmitterDef> emitters;
+    OutputDef output;
+};
+
+/// Bad input: one line per problem, "path: message" or "file:line:column: message".
+class SceneError : public std::runtime_error {
+public:
+    explicit SceneError(std::vector<std::string> problems);
+    std::vector<std::string> problems;
+};
+
+/// Parse scene text; `source` names it in messages. Throws SceneError.
+Scene parseScene(std::string_view json, const std::string& source);
+/// Read and parse a scene file. Throws SceneError (also for an unreadable file).
+Scene loadScene(const std::filesystem::path& file);
+
+/// How big a scene gets.
+struct SceneEstimate {
+    std::vector<std::uint64_t> initialParticles;  ///< per material, from blocks
+    std::vector<std::uint64_t> emittedParticles;  ///< per material, by end_time
+    std::uint64_t totalParticles = 0;
+    std::uint64_t bytes = 0;                      ///< peak memory, estimated
+};
+SceneEstimate estimate(const Scene& scene);
+/// Bytes of memory one particle costs (state, neighbour lists, grid), for estimates.
+inline constexpr std::uint64_t kBytesPerParticle = 320;
+
+/// Memory this machine can still give, bytes (MemAvailable).
+std::uint64_t availableMemoryBytes();
+
+/// Create the world a scene describes: materials, obstacles, blocks, emitters.
+World buildWorld(const Scene& scene);
+
+}  // namespace tide::io

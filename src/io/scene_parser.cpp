@@ -1,0 +1,429 @@
+// Scene JSON → tide::io::Scene, collecting every problem with its JSON path.
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <optional>
+#include <sstream>
+
+#include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
+#include <nlohmann/json.hpp>
+
+#include <tide/io/scene.hpp>
+
+namespace tide::io {
+
+namespace {
+
+using nlohmann::json;
+
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+std::string indexed(const std::string& path, std::size_t i) {
+    std::ostringstream out;
+    out << path << '[' << i << ']';
+    return out.str();
+}
+
+std::size_t editDistance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+/// ` (did you mean "x"?)` for the closest known name, when it is close.
+std::string suggestion(std::string_view given, const std::vector<std::string>& known) {
+    std::string best;
+    std::size_t bestDistance = 3;
+    for (const auto& k : known) {
+        const std::size_t d = editDistance(given, k);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = k;
+        }
+    }
+    return best.empty() ? std::string() : " (did you mean \"" + best + "\"?)";
+}
+
+std::string show(const json& value) {
+    std::string text = value.dump();
+    if (text.size() > 60) text = text.substr(0, 57) + "...";
+    return text;
+}
+
+/// Reads typed values, recording a problem (and returning nothing) for each bad one.
+class Reader {
+public:
+    std::vector<std::string> problems;
+
+    void fail(const std::string& path, const std::string& message) { problems.push_back(path + ": " + message); }
+
+    /// True when j is an object; flags every key not in `known`.
+    bool object(const json& j, const std::string& path, std::initializer_list<const char*> known) {
+        if (!j.is_object()) {
+            fail(path.empty() ? "(scene)" : path, "must be an object, got " + show(j));
+            return false;
+        }
+        const std::vector<std::string> names(known.begin(), known.end());
+        for (const auto& [key, value] : j.items())
+            if (std::find(names.begin(), names.end(), key) == names.end())
+                fail(join(path, key), "unknown key" + suggestion(key, names));
+        return true;
+    }
+
+    std::optional<double> number(const json& obj, const char* key, const std::string& path, bool required,
+                                 double lo, double hi, bool exclusiveLow = false) {
+        const std::string where = join(path, key);
+        if (!obj.contains(key)) {
+            if (required) fail(where, "missing (required)");
+            return std::nullopt;
+        }
+        const json& v = obj.at(key);
+        if (!v.is_number()) {
+            fail(where, "must be a number, got " + show(v));
+            return std::nullopt;
+        }
+        const double x = v.get<double>();
+        if (!std::isfinite(x) || x < lo || x > hi || (exclusiveLow && x <= lo)) {
+            std::ostringstream range;
+            range << (exclusiveLow ? "> " : ">= ") << lo;
+            if (hi < 1e300) range << " and <= " << hi;
+            fail(where, "must be " + range.str() + ", got " + show(v));
+            return std::nullopt;
+        }
+        return x;
+    }
+
+    std::optional<glm::vec3> vec3(const json& obj, const char* key, const std::string& path, bool required) {
+        const std::string where = join(path, key);
+        if (!obj.contains(key)) {
+            if (required) fail(where, "missing (required)");
+            return std::nullopt;
+        }
+        const json& v = obj.at(key);
+        if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); })) {
+            fail(where, "must be an array of 3 numbers, got " + show(v));
+            return std::nullopt;
+        }
+        glm::vec3 out;
+        for (int a = 0; a < 3; ++a) {
+            const double x = v[static_cast<std::size_t>(a)].get<double>();
+            if (!std::isfinite(x) || std::abs(x) > 1e30) {
+                fail(where, "must be finite, got " + show(v));
+                return std::nullopt;
+            }
+            out[a] = static_cast<float>(x);
+        }
+        return out;
+    }
+
+    std::optional<std::string> string(const json& obj, const char* key, const std::string& path, bool required) {
+        const std::string where = join(path, key);
+        if (!obj.contains(key)) {
+            if (required) fail(where, "missing (required)");
+            return std::nullopt;
+        }
+        if (!obj.at(key).is_string()) {
+            fail(where, "must be a string, got " + show(obj.at(key)));
+            return std::nullopt;
+        }
+        return obj.at(key).get<std::string>();
+    }
+
+    std::optional<bool> boolean(const json& obj, const char* key, const std::string& path) {
+        if (!obj.contains(key)) return std::nullopt;
+        if (!obj.at(key).is_boolean()) {
+            fail(join(path, key), "must be true or false, got " + show(obj.at(key)));
+            return std::nullopt;
+        }
+        return obj.at(key).get<bool>();
+    }
+
+    /// The array at key (empty when absent); flags a non-array.
+    const json& array(const json& obj, const char* key, const std::string& path, bool required) {
+        static const json empty = json::array();
+        if (!obj.contains(key)) {
+            if (required) fail(join(path, key), "missing (required)");
+            return empty;
+        }
+        if (!obj.at(key).is_array()) {
+            fail(join(path, key), "must be an array, got " + show(obj.at(key)));
+            return empty;
+        }
+        return obj.at(key);
+    }
+};
+
+bool boxInside(const glm::vec3& min, const glm::vec3& max, const WorldDef& w) {
+    const float slack = 1e-5f * glm::length(w.domainMax - w.domainMin);
+    for (int a = 0; a < 3; ++a)
+        if (min[a] < w.domainMin[a] - slack || max[a] > w.domainMax[a] + slack) return false;
+    return true;
+}
+
+std::string showVec(const glm::vec3& v) {
+    std::ostringstream out;
+    out << '[' << v.x << ", " << v.y << ", " << v.z << ']';
+    return out.str();
+}
+
+/// Reads `min`/`max` of a box and checks min ≤ max.
+bool readBox(Reader& r, const json& j, const std::string& path, float scale, glm::vec3& min, glm::vec3& max) {
+    const auto lo = r.vec3(j, "min", path, true);
+    const auto hi = r.vec3(j, "max", path, true);
+    if (!lo || !hi) return false;
+    for (int a = 0; a < 3; ++a)
+        if ((*lo)[a] > (*hi)[a]) {
+            r.fail(join(path, "max"), "must not be below min " + showVec(*lo) + " on any axis, got " + showVec(*hi));
+            return false;
+        }
+    min = *lo * scale;
+    max = *hi * scale;
+    return true;
+}
+
+void readSolver(Reader& r, const json& j, Scene& scene) {
+    const std::string path = "solver";
+    if (!r.object(j, path, {"method", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "xsph",
+                            "clamp_negative_pressure", "support_ratio"}))
+        return;
+    SolverDef& s = scene.world.solver;
+    if (auto method = r.string(j, "method", path, false)) {
+        const auto known = solverNames();
+        if (std::find(known.begin(), known.end(), *method) == known.end()) {
+            std::string list;
+            for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+            r.fail(join(path, "method"), "unknown solver \"" + *method + "\"" + suggestion(*method, known) +
+                                             "; known: " + list);
+        } else {
+            s.method = *method;
+        }
+    }
+    if (auto eos = r.string(j, "equation_of_state", path, false)) {
+        if (*eos == "linear") s.equationOfState = EquationOfState::Linear;
+        else if (*eos == "tait") s.equationOfState = EquationOfState::Tait;
+        else r.fail(join(path, "equation_of_state"), "must be \"linear\" or \"tait\", got \"" + *eos + "\"");
+    }
+    if (auto v = r.number(j, "sound_speed", path, false, 0.0, 1e5)) s.soundSpeed = static_cast<float>(*v);
+    if (auto v = r.number(j, "cfl", path, false, 0.0, 1.0, true)) s.cflNumber = static_cast<float>(*v);
+    if (auto v = r.number(j, "min_dt", path, false, 0.0, 1.0, true)) s.minDt = static_cast<float>(*v);
+    if (auto v = r.number(j, "max_dt", path, false, 0.0, 1.0, true)) s.maxDt = static_cast<float>(*v);
+    if (s.minDt > s.maxDt) r.fail(join(path, "min_dt"), "must not exceed max_dt");
+    if (auto v = r.number(j, "xsph", path, false, 0.0, 1.0)) s.xsph = static_cast<float>(*v);
+    if (auto v = r.boolean(j, "clamp_negative_pressure", path)) s.clampNegativePressure = *v;
+    if (auto v = r.number(j, "support_ratio", path, false, 1.0, 4.0)) scene.world.supportRatio = static_cast<float>(*v);
+}
+
+void readMaterials(Reader& r, const json& list, Scene& scene) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = indexed("materials", i);
+        if (!r.object(list[i], path, {"name", "density", "viscosity", "color"})) continue;
+        MaterialDef m;
+        if (auto name = r.string(list[i], "name", path, true)) {
+            for (const MaterialDef& other : scene.materials)
+                if (other.name == *name) r.fail(join(path, "name"), "\"" + *name + "\" is already used by another material");
+            m.name = *name;
+        }
+        if (auto v = r.number(list[i], "density", path, true, 0.0, 1e6, true)) m.restDensity = static_cast<float>(*v);
+        if (auto v = r.number(list[i], "viscosity", path, false, 0.0, 1e6)) m.viscosity = static_cast<float>(*v);
+        if (auto c = r.vec3(list[i], "color", path, false)) {
+            if (glm::any(glm::lessThan(*c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(*c, glm::vec3(1.0f))))
+                r.fail(join(path, "color"), "components must be in [0, 1], got " + showVec(*c));
+            else
+                m.color = *c;
+        }
+        scene.materials.push_back(m);
+    }
+}
+
+/// Index of the material named at obj.material (default: the first material).
+std::optional<MaterialIndex> readMaterialRef(Reader& r, const json& obj, const std::string& path, const Scene& scene) {
+    auto name = r.string(obj, "material", path, false);
+    if (!name) return scene.materials.empty() ? std::nullopt : std::optional<MaterialIndex>(0);
+    std::vector<std::string> known;
+    for (std::size_t m = 0; m < scene.materials.size(); ++m) {
+        if (scene.materials[m].name == *name) return static_cast<MaterialIndex>(m);
+        known.push_back(scene.materials[m].name);
+    }
+    r.fail(join(path, "material"), "no material named \"" + *name + "\"" + suggestion(*name, known));
+    return std::nullopt;
+}
+
+}  // namespace
+
+SceneError::SceneError(std::vector<std::string> list)
+    : std::runtime_error(list.empty() ? "bad scene" : list.front()), problems(std::move(list)) {}
+
+Scene parseScene(std::string_view text, const std::string& source) {
+    json root;
+    try {
+        root = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        // e.byte is the 1-based offset where parsing failed; turn it into line:column.
+        std::size_t line = 1, column = 1;
+        for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
+            if (text[k] == '\n') {
+                ++line;
+                column = 1;
+            } else {
+                ++column;
+            }
+        }
+        std::string message = e.what();
+        const auto colon = message.find(": ", message.find("column"));
+        if (colon != std::string::npos) message = message.substr(colon + 2);
+        std::ostringstream out;
+        out << source << ':' << line << ':' << column << ": " << message;
+        throw SceneError({out.str()});
+    }
+
+    Reader r;
+    Scene scene;
+    if (!r.object(root, "", {"name", "unit_scale", "domain", "gravity", "particle_spacing", "end_time", "solver",
+                             "materials", "blocks", "emitters", "obstacles", "output"}))
+        throw SceneError(r.problems);
+
+    float scale = 1.0f;
+    if (auto v = r.number(root, "unit_scale", "", false, 0.0, 1e6, true)) scale = static_cast<float>(*v);
+    if (auto name = r.string(root, "name", "", false)) scene.name = *name;
+
+    WorldDef& w = scene.world;
+    bool domainOk = false;
+    if (!root.contains("domain")) {
+        r.fail("domain", "missing (required)");
+    } else if (r.object(root["domain"], "domain", {"min", "max"})) {
+        glm::vec3 lo, hi;
+        if (readBox(r, root["domain"], "domain", scale, lo, hi)) {
+            if (glm::any(glm::equal(lo, hi))) {
+                r.fail("domain.max", "must exceed min on every axis, got " + showVec(hi / scale));
+            } else {
+                w.domainMin = lo;
+                w.domainMax = hi;
+                domainOk = true;
+            }
+        }
+    }
+    if (auto g = r.vec3(root, "gravity", "", false)) w.gravity = *g * scale;
+    if (auto v = r.number(root, "particle_spacing", "", true, 0.0, 1e6, true)) w.particleSpacing = static_cast<float>(*v) * scale;
+    if (auto v = r.number(root, "end_time", "", true, 0.0, 1e7, true)) scene.endTime = *v;
+    if (root.contains("solver")) readSolver(r, root["solver"], scene);
+
+    readMaterials(r, r.array(root, "materials", "", true), scene);
+    if (root.contains("materials") && root["materials"].is_array() && root["materials"].empty())
+        r.fail("materials", "must list at least one material");
+
+    const json& obstacles = r.array(root, "obstacles", "", false);
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+        const std::string path = indexed("obstacles", i);
+        if (!obstacles[i].is_object()) {
+            r.fail(path, "must be an object, got " + show(obstacles[i]));
+            continue;
+        }
+        auto type = r.string(obstacles[i], "type", path, true);
+        ObstacleDef o;
+        if (!type) continue;
+        if (*type == "box") {
+            if (!r.object(obstacles[i], path, {"type", "min", "max"})) continue;
+            if (!readBox(r, obstacles[i], path, scale, o.min, o.max)) continue;
+            o.shape = ObstacleDef::Shape::Box;
+        } else if (*type == "sphere") {
+            if (!r.object(obstacles[i], path, {"type", "center", "radius"})) continue;
+            const auto c = r.vec3(obstacles[i], "center", path, true);
+            const auto radius = r.number(obstacles[i], "radius", path, true, 0.0, 1e6, true);
+            if (!c || !radius) continue;
+            o.shape = ObstacleDef::Shape::Sphere;
+            o.center = *c * scale;
+            o.radius = static_cast<float>(*radius) * scale;
+        } else {
+            r.fail(join(path, "type"), "must be \"box\" or \"sphere\", got \"" + *type + "\"" +
+                                           suggestion(*type, {"box", "sphere"}));
+            continue;
+        }
+        scene.obstacles.push_back(o);
+    }
+
+    const json& blocks = r.array(root, "blocks", "", false);
+    for (std::size_t i = 0; i < blocks.size(); ++i) {
+        const std::string path = indexed("blocks", i);
+        if (!r.object(blocks[i], path, {"min", "max", "velocity", "material"})) continue;
+        BlockDef b;
+        const bool boxOk = readBox(r, blocks[i], path, scale, b.min, b.max);
+        if (auto v = r.vec3(blocks[i], "velocity", path, false)) b.velocity = *v * scale;
+        const auto material = readMaterialRef(r, blocks[i], path, scene);
+        if (!boxOk || !material) continue;
+        b.material = *material;
+        if (domainOk && !boxInside(b.min, b.max, w)) {
+            r.fail(path, "box " + showVec(b.min / scale) + ".." + showVec(b.max / scale) +
+                             " lies outside the domain " + showVec(w.domainMin / scale) + ".." + showVec(w.domainMax / scale));
+            continue;
+        }
+        scene.blocks.push_back(b);
+    }
+
+    const json& emitters = r.array(root, "emitters", "", false);
+    for (std::size_t i = 0; i < emitters.size(); ++i) {
+        const std::string path = indexed("emitters", i);
+        if (!r.object(emitters[i], path, {"min", "max", "velocity", "material", "start", "end"})) continue;
+        EmitterDef e;
+        const bool boxOk = readBox(r, emitters[i], path, scale, e.min, e.max);
+        const auto v = r.vec3(emitters[i], "velocity", path, true);
+        if (v && glm::length(*v) == 0.0f) r.fail(join(path, "velocity"), "must be non-zero, got [0, 0, 0]");
+        const auto start = r.number(emitters[i], "start", path, false, 0.0, 1e7);
+        const auto end = r.number(emitters[i], "end", path, false, 0.0, 1e7);
+        const auto material = readMaterialRef(r, emitters[i], path, scene);
+        if (start) e.start = *start;
+        if (end) e.end = *end;
+        if (start && end && *end <= *start) r.fail(join(path, "end"), "must be after start");
+        if (!boxOk || !v || glm::length(*v) == 0.0f || !material) continue;
+        e.velocity = *v * scale;
+        e.material = *material;
+        if (domainOk && !boxInside(e.min, e.max, w)) {
+            r.fail(path, "outlet " + showVec(e.min / scale) + ".." + showVec(e.max / scale) + " lies outside the domain");
+            continue;
+        }
+        scene.emitters.push_back(e);
+    }
+
+    if (root.contains("output") && r.object(root["output"], "output", {"fps", "formats"})) {
+        const json& out = root["output"];
+        if (auto fps = r.number(out, "fps", "output", false, 0.0, 1e4, true)) scene.output.fps = *fps;
+        if (out.contains("formats")) {
+            scene.output.formats.clear();
+            const json& formats = r.array(out, "formats", "output", false);
+            for (std::size_t i = 0; i < formats.size(); ++i) {
+                const std::string path = indexed("output.formats", i);
+                const auto f = formats[i].is_string() ? parseFormat(formats[i].get<std::string>()) : std::nullopt;
+                if (!f) r.fail(path, "must be \"vtu\", \"ply\" or \"csv\", got " + show(formats[i]));
+                else if (std::find(scene.output.formats.begin(), scene.output.formats.end(), *f) == scene.output.formats.end())
+                    scene.output.formats.push_back(*f);
+            }
+        }
+    }
+
+    if (r.problems.empty()) {
+        const SceneEstimate size = estimate(scene);
+        const std::uint64_t available = availableMemoryBytes();
+        if (size.bytes > available) {
+            std::ostringstream msg;
+            msg << "the scene needs about " << size.totalParticles << " particles and " << (size.bytes >> 20)
+                << " MiB, more than the " << (available >> 20) << " MiB this machine has free (particle_spacing "
+                << w.particleSpacing / scale << ")";
+            r.fail("particle_spacing", msg.str());
+        }
+        if (size.totalParticles > 0xfffffff0ull) r.fail("particle_spacing", "more than 2^32 particles");
+        scene.world.capacity = static_cast<std::uint32_t>(std::min<std::uint64_t>(size.totalParticles + 1, 0xfffffff0ull));
+    }
+    if (!r.problems.empty()) throw SceneError(r.problems);
+    return scene;
+}
+
+}  // namespace tide::io

@@ -1,0 +1,261 @@
+// The `tide` command line, run as a user would: bad scenes, output formats, progress, stats.
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+    int exit;
+    std::string output;  ///< stdout and stderr together
+};
+
+Result run(const std::string& command) {
+    Result r{-1, {}};
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return r;
+    std::array<char, 4096> buffer{};
+    std::size_t n;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+fs::path scratch(const std::string& name) {
+    const fs::path dir = fs::temp_directory_path() / ("tide_cli_test_" + std::to_string(::getpid())) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir.parent_path());
+    return dir;
+}
+
+fs::path writeScene(const std::string& name, const std::string& text) {
+    const fs::path file = scratch(name + ".json");
+    std::ofstream(file) << text;
+    return file;
+}
+
+const std::string kTide = TIDE_BIN;
+
+/// A small valid scene; `extra` is spliced in as more top-level keys.
+std::string smallScene(const std::string& extra = "") {
+    return R"({
+  "name": "small", "domain": {"min": [0, 0, 0], "max": [0.2, 0.2, 0.2]}, "gravity": [0, -9.81, 0],
+  "particle_spacing": 0.02, "end_time": 0.1,
+  "materials": [{"name": "water", "density": 1000, "viscosity": 0.001}],
+  "blocks": [{"min": [0, 0, 0], "max": [0.1, 0.1, 0.2], "material": "water"}],
+  "output": {"fps": 20, "formats": ["vtu"]})" + extra + "\n}\n";
+}
+
+struct BrokenScene {
+    const char* what;
+    std::string text;
+    const char* field;  ///< must appear in the error message
+};
+
+std::string replace(std::string text, const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    if (at == std::string::npos) throw std::logic_error("test bug: no " + from);
+    return text.replace(at, from.size(), to);
+}
+
+std::vector<BrokenScene> brokenScenes() {
+    const std::string ok = smallScene();
+    return {
+        {"truncated JSON", ok.substr(0, 60), ":2:"},
+        {"trailing comma", replace(ok, "\"end_time\": 0.1,", "\"end_time\": 0.1,,"), ":3:"},
+        {"not an object", "[1, 2, 3]", "must be an object"},
+        {"unknown top-level key", replace(ok, "\"end_time\"", "\"end_tme\": 1, \"end_time\""), "end_tme"},
+        {"suggests a close key", replace(ok, "\"gravity\"", "\"gravty\": [0,0,0], \"gravity\""), "did you mean \"gravity\""},
+        {"missing domain", replace(ok, "\"domain\"", "\"unused_domain_key_x\""), "domain"},
+        {"domain not an object", replace(ok, R"({"min": [0, 0, 0], "max": [0.2, 0.2, 0.2]})", "5"), "domain"},
+        {"domain min above max", replace(ok, "\"max\": [0.2, 0.2, 0.2]", "\"max\": [0.2, -0.2, 0.2]"), "domain.max"},
+        {"domain flat", replace(ok, "\"max\": [0.2, 0.2, 0.2]", "\"max\": [0.2, 0, 0.2]"), "domain.max"},
+        {"domain min two numbers", replace(ok, "\"min\": [0, 0, 0], \"max\": [0.2", "\"min\": [0, 0], \"max\": [0.2"), "domain.min"},
+        {"gravity a string", replace(ok, "[0, -9.81, 0]", "\"down\""), "gravity"},
+        {"spacing zero", replace(ok, "\"particle_spacing\": 0.02", "\"particle_spacing\": 0"), "particle_spacing"},
+        {"spacing negative", replace(ok, "\"particle_spacing\": 0.02", "\"particle_spacing\": -0.1"), "particle_spacing"},
+        {"spacing missing", replace(ok, "\"particle_spacing\": 0.02,", ""), "particle_spacing"},
+        {"spacing too fine for memory", replace(ok, "\"particle_spacing\": 0.02", "\"particle_spacing\": 0.00005"), "particle_spacing"},
+        {"end time negative", replace(ok, "\"end_time\": 0.1", "\"end_time\": -1"), "end_time"},
+        {"end time a string", replace(ok, "\"end_time\": 0.1", "\"end_time\": \"soon\""), "end_time"},
+        {"no materials", replace(ok, R"([{"name": "water", "density": 1000, "viscosity": 0.001}])", "[]"), "materials"},
+        {"negative density", replace(ok, "\"density\": 1000", "\"density\": -1000"), "materials[0].density"},
+        {"density missing", replace(ok, "\"density\": 1000, ", ""), "materials[0].density"},
+        {"negative viscosity", replace(ok, "\"viscosity\": 0.001", "\"viscosity\": -2"), "materials[0].viscosity"},
+        {"unknown material key", replace(ok, "\"viscosity\": 0.001", "\"viscosity\": 0.001, \"colour\": [1, 0, 0]"), "materials[0].colour"},
+        {"colour out of range", replace(ok, "\"viscosity\": 0.001", "\"viscosity\": 0.001, \"color\": [2, 0, 0]"), "materials[0].color"},
+        {"material without name", replace(ok, "\"name\": \"water\", ", ""), "materials[0].name"},
+        {"block of unknown material", replace(ok, "\"material\": \"water\"}]", "\"material\": \"watr\"}]"), "blocks[0].material"},
+        {"block outside the domain", replace(ok, "\"max\": [0.1, 0.1, 0.2]", "\"max\": [0.1, 0.1, 0.5]"), "blocks[0]"},
+        {"block min above max", replace(ok, "\"max\": [0.1, 0.1, 0.2]", "\"max\": [0.1, -0.1, 0.2]"), "blocks[0].max"},
+        {"block velocity two numbers", replace(ok, "\"material\": \"water\"}]", "\"material\": \"water\", \"velocity\": [1, 2]}]"), "blocks[0].velocity"},
+        {"blocks not an array", replace(ok, R"([{"min": [0, 0, 0], "max": [0.1, 0.1, 0.2], "material": "water"}])", "{}"), "blocks"},
+        {"unknown solver", smallScene(R"(, "solver": {"method": "dfsph-ultra"})"), "solver.method"},
+        {"unknown solver key", smallScene(R"(, "solver": {"methd": "classic"})"), "solver.methd"},
+        {"bad equation of state", smallScene(R"(, "solver": {"equation_of_state": "ideal gas"})"), "solver.equation_of_state"},
+        {"cfl above one", smallScene(R"(, "solver": {"cfl": 4})"), "solver.cfl"},
+        {"unknown output format", replace(ok, "[\"vtu\"]", "[\"vtk\"]"), "output.formats[0]"},
+        {"fps zero", replace(ok, "\"fps\": 20", "\"fps\": 0"), "output.fps"},
+        {"emitter without velocity", smallScene(R"(, "emitters": [{"min": [0, 0.1, 0.05], "max": [0, 0.15, 0.1]}])"), "emitters[0].velocity"},
+        {"emitter zero velocity", smallScene(R"(, "emitters": [{"min": [0, 0.1, 0.05], "max": [0, 0.15, 0.1], "velocity": [0, 0, 0]}])"), "emitters[0].velocity"},
+        {"emitter ends before start", smallScene(R"(, "emitters": [{"min": [0, 0.1, 0.05], "max": [0, 0.15, 0.1], "velocity": [1, 0, 0], "start": 2, "end": 1}])"), "emitters[0].end"},
+        {"emitter outside the domain", smallScene(R"(, "emitters": [{"min": [-1, 0.1, 0.05], "max": [-1, 0.15, 0.1], "velocity": [1, 0, 0]}])"), "emitters[0]"},
+        {"unknown obstacle type", smallScene(R"(, "obstacles": [{"type": "cone"}])"), "obstacles[0].type"},
+        {"sphere without radius", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.1, 0.1, 0.1]}])"), "obstacles[0].radius"},
+        {"box obstacle with radius", smallScene(R"(, "obstacles": [{"type": "box", "min": [0, 0, 0], "max": [0.1, 0.1, 0.1], "radius": 1}])"), "obstacles[0].radius"},
+        {"unit scale zero", smallScene(R"(, "unit_scale": 0)"), "unit_scale"},
+    };
+}
+
+TEST(Cli, BrokenScenesExitTwoNamingTheField) {
+    const auto cases = brokenScenes();
+    ASSERT_GE(cases.size(), 30u);
+    int k = 0;
+    for (const BrokenScene& c : cases) {
+        const fs::path file = writeScene("broken_" + std::to_string(k++), c.text);
+        const Result r = run(kTide + " validate " + file.string());
+        EXPECT_EQ(r.exit, 2) << c.what << "\n" << r.output;
+        EXPECT_NE(r.output.find(c.field), std::string::npos) << c.what << ": message lacks \"" << c.field << "\"\n" << r.output;
+    }
+}
+
+TEST(Cli, ValidateDescribesAGoodScene) {
+    const Result r = run(kTide + " validate " + writeScene("good", smallScene()).string());
+    EXPECT_EQ(r.exit, 0) << r.output;
+    EXPECT_NE(r.output.find("250 particles"), std::string::npos) << r.output;  // 5 × 5 × 10
+    EXPECT_NE(r.output.find("MiB"), std::string::npos);
+}
+
+TEST(Cli, BadFlagsExitTwo) {
+    EXPECT_EQ(run(kTide + " run").exit, 2);
+    EXPECT_EQ(run(kTide + " frobnicate").exit, 2);
+    const fs::path scene = writeScene("flags", smallScene());
+    EXPECT_EQ(run(kTide + " run " + scene.string() + " --format vtk").exit, 2);
+    EXPECT_EQ(run(kTide + " run " + scene.string() + " --end-time -1").exit, 2);
+    EXPECT_EQ(run(kTide + " run " + scene.string() + " --solver nope --out " + scratch("x").string()).exit, 2);
+    const Result help = run(kTide + " run --help");
+    EXPECT_EQ(help.exit, 0);
+    for (const char* flag : {"--out", "--end-time", "--threads", "--format", "--solver", "--force", "--quiet"})
+        EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
+}
+
+TEST(Cli, RunWritesEveryFormatAndStats) {
+    const fs::path scene = writeScene("formats", smallScene());
+    const fs::path out = scratch("formats_out");
+    const Result r = run(kTide + " run " + scene.string() + " --out " + out.string() + " --format vtu,ply,csv");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    // 0.1 s at 20 fps: frames 0..2, one plain progress line each (not a terminal here).
+    for (int f = 0; f <= 2; ++f)
+        for (const char* ext : {"vtu", "ply", "csv"}) {
+            char name[32];
+            std::snprintf(name, sizeof name, "frame_%05d.%s", f, ext);
+            EXPECT_TRUE(fs::exists(out / name)) << name;
+        }
+    EXPECT_FALSE(fs::exists(out / "frame_00003.vtu"));
+    EXPECT_NE(r.output.find("frame 2/2"), std::string::npos) << r.output;
+
+    std::ifstream csv(out / "frame_00002.csv");
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_EQ(line, "x,y,z,vx,vy,vz,density,pressure,material");
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        double v[9];
+        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", v, v + 1, v + 2, v + 3, v + 4, v + 5,
+                              v + 6, v + 7, v + 8), 9) << line;
+        EXPECT_GT(v[6], 500.0);   // density
+        EXPECT_LE(v[1], 0.2);     // inside the box
+        ++rows;
+    }
+    EXPECT_EQ(rows, 250);
+
+    std::ifstream ply(out / "frame_00002.ply", std::ios::binary);
+    std::string header;
+    while (std::getline(ply, line) && line != "end_header") header += line + "\n";
+    EXPECT_EQ(header.rfind("ply\nformat binary_little_endian 1.0\n", 0), 0u) << header;
+    EXPECT_NE(header.find("element vertex 250\n"), std::string::npos) << header;
+
+    // The VTU frames and the PVD series load in a real reader (Debian's python3-meshio).
+    const std::string check = "/usr/bin/python3 -c \""
+        "import meshio, xml.etree.ElementTree as ET, os, sys\n"
+        "d = sys.argv[1]\n"
+        "sets = ET.parse(os.path.join(d, 'frames.pvd')).getroot().find('Collection').findall('DataSet')\n"
+        "assert [round(float(s.get('timestep')), 6) for s in sets] == [0.0, 0.05, 0.1], sets\n"
+        "for s in sets:\n"
+        "    m = meshio.read(os.path.join(d, s.get('file')))\n"
+        "    assert m.points.shape == (250, 3), m.points.shape\n"
+        "    assert set(['velocity', 'density', 'pressure', 'material']) <= set(m.point_data), m.point_data.keys()\n"
+        "    assert (m.point_data['density'] > 500).all()\n"
+        "print('vtu ok')\" " + out.string();
+    const Result py = run(check);
+    EXPECT_EQ(py.exit, 0) << py.output;
+
+    std::ifstream statsFile(out / "stats.json");
+    std::stringstream stats;
+    stats << statsFile.rdbuf();
+    for (const char* key : {"particles", "steps", "sim_time", "wall_time", "particle_steps_per_second", "dt_min",
+                            "dt_mean", "dt_max", "max_density_error", "avg_density_error", "particles_lost",
+                            "threads", "solver"})
+        EXPECT_NE(stats.str().find(std::string("\"") + key + "\":"), std::string::npos) << key;
+    EXPECT_NE(stats.str().find("\"particles_lost\": 0"), std::string::npos) << stats.str();
+    EXPECT_NE(stats.str().find("\"sim_time\": 0.1"), std::string::npos) << stats.str();
+}
+
+TEST(Cli, RefusesAnotherRunsFolderUnlessForced) {
+    const fs::path scene = writeScene("force", smallScene());
+    const fs::path out = scratch("force_out");
+    ASSERT_EQ(run(kTide + " run " + scene.string() + " --quiet --end-time 0.05 --out " + out.string()).exit, 0);
+    const auto before = fs::last_write_time(out / "frame_00001.vtu");
+    const Result refused = run(kTide + " run " + scene.string() + " --quiet --out " + out.string());
+    EXPECT_EQ(refused.exit, 2);
+    EXPECT_NE(refused.output.find("--force"), std::string::npos) << refused.output;
+    EXPECT_EQ(fs::last_write_time(out / "frame_00001.vtu"), before);  // nothing touched
+    std::ofstream(out / "notes.txt") << "mine";
+    EXPECT_EQ(run(kTide + " run " + scene.string() + " --quiet --force --out " + out.string()).exit, 0);
+    EXPECT_TRUE(fs::exists(out / "notes.txt"));  // --force replaces only tide's own files
+    EXPECT_TRUE(fs::exists(out / "frame_00002.vtu"));
+}
+
+TEST(Cli, ShowsAProgressBarOnATerminal) {
+    const fs::path scene = writeScene("tty", smallScene());
+    const fs::path out = scratch("tty_out");
+    // `script` gives the command a pseudo-terminal.
+    const Result r = run("script -qec '" + kTide + " run " + scene.string() + " --out " + out.string() + "' /dev/null");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    EXPECT_NE(r.output.find("\r["), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("ETA"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("particle-steps/s"), std::string::npos) << r.output;
+}
+
+TEST(Cli, DivergenceExitsOneAndKeepsEarlierFrames) {
+    // A time step forced 40× beyond the viscous stability limit: the fluid collapses.
+    const std::string exploding = replace(smallScene(R"(, "solver": {"min_dt": 0.01, "max_dt": 0.01})"),
+                                          "\"viscosity\": 0.001", "\"viscosity\": 1000000");
+    const fs::path out = scratch("diverge_out");
+    const Result r = run(kTide + " run " + writeScene("diverge", exploding).string() + " --quiet --out " + out.string());
+    EXPECT_EQ(r.exit, 1) << r.output;
+    EXPECT_NE(r.output.find("diverged"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("particle"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(out / "frame_00000.vtu"));
+}
+
+TEST(Cli, ShippedScenesValidate) {
+    for (const auto& entry : fs::directory_iterator(TIDE_SCENES_DIR)) {
+        if (entry.path().extension() != ".json" || entry.path().filename() == "scene.schema.json") continue;
+        const Result r = run(kTide + " validate " + entry.path().string());
+        EXPECT_EQ(r.exit, 0) << entry.path() << "\n" << r.output;
+    }
+}
+
+}  // namespace
