@@ -238,6 +238,24 @@ TEST(Cli, ShowsAProgressBarOnATerminal) {
     EXPECT_NE(r.output.find("particle-steps/s"), std::string::npos) << r.output;
 }
 
+TEST(Cli, ShippedDamBreakShowsProgressAndFullStats) {
+    const fs::path out = scratch("dam_break_out");
+    const std::string scene = std::string(TIDE_SCENES_DIR) + "/dam_break.json";
+    const Result r = run("script -qec '" + kTide + " run " + scene + " --end-time 0.04 --out " + out.string() +
+                         "' /dev/null");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    EXPECT_NE(r.output.find("\r["), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("frame 1/1"), std::string::npos) << r.output;
+    std::ifstream statsFile(out / "stats.json");
+    std::stringstream stats;
+    stats << statsFile.rdbuf();
+    for (const char* key : {"particles", "steps", "sim_time", "wall_time", "particle_steps_per_second", "dt_min",
+                            "dt_mean", "dt_max", "max_density_error", "avg_density_error", "particles_lost",
+                            "threads", "solver"})
+        EXPECT_NE(stats.str().find(std::string("\"") + key + "\":"), std::string::npos) << key;
+    EXPECT_NE(stats.str().find("\"particles_lost\": 0"), std::string::npos) << stats.str();
+}
+
 TEST(Cli, DivergenceExitsOneAndKeepsEarlierFrames) {
     // A time step forced 40× beyond the viscous stability limit: the fluid collapses.
     const std::string exploding = replace(smallScene(R"(, "solver": {"min_dt": 0.01, "max_dt": 0.01})"),
