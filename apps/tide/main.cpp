@@ -24,6 +24,10 @@ int main(int argc, char** argv) {
     runApp->add_option("--solver", run.solver, "Solver, overriding the scene's solver.method");
     runApp->add_flag("--force", run.force, "Write into a folder that holds another run, replacing its frames");
     runApp->add_flag("--quiet", run.quiet, "No progress output");
+    runApp->footer("On a terminal a progress bar shows simulated time, frame, particles, particle-steps/s and\n"
+                   "the time left; otherwise one line per frame. Frame k (time k/fps) is written as\n"
+                   "OUT/frame_NNNNN.<format>, with OUT/frames.pvd for ParaView and OUT/stats.json at the end.\n"
+                   "Exit codes: 0 success, 1 the run failed (e.g. diverged), 2 bad input.");
 
     std::string validateScene;
     CLI::App* validateApp = app.add_subcommand("validate", "Check a scene and print what it would simulate");
