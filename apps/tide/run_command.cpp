@@ -92,6 +92,8 @@ void writeStats(const fs::path& file, const World& world, double wall, std::uint
     j["particles_lost"] = lost;
     j["threads"] = world.threads();
     j["solver"] = world.def().solver.method;
+    j["pressure_iterations_mean"] =
+        s.steps ? static_cast<double>(s.pressureIterationsSum) / static_cast<double>(s.steps) : 0.0;
     io::writeFileAtomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 

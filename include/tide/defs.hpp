@@ -30,16 +30,22 @@ enum class EquationOfState {
 
 /// How the pressure/viscosity solver runs and how its time step is chosen.
 struct SolverDef {
-    std::string method = "classic";         ///< solver name, see tide::solverNames()
+    std::string method = "classic";         ///< solver name, see tide::solverNames(): classic, wcsph, dfsph
     EquationOfState equationOfState = EquationOfState::Linear;
-    /// Numerical speed of sound, m/s. 0 picks 10 × the free-fall speed over the
-    /// domain height, which keeps density variations near 1 %.
+    /// Numerical speed of sound, m/s (classic, wcsph). 0 picks 10 × the free-fall speed
+    /// over the domain height, which keeps density variations near 1 %.
     float soundSpeed = 0.0f;
     /// Negative pressures (tension) pull free-surface particles into clumps; clamp them
     /// to zero by default, as most SPH codes do.
     bool clampNegativePressure = true;
     /// XSPH velocity smoothing ε (Monaghan 1989), in [0, 1]: damps particle-scale noise.
-    float xsph = 0.25f;
+    /// Negative: the solver's own default (classic 0.25, the others 0.01).
+    float xsph = -1.0f;
+    /// Incompressible solvers (dfsph, pcisph) iterate until the mean compression
+    /// (ρ − ρ0)/ρ0 is below this (0.001 = 0.1 %).
+    float maxDensityError = 0.001f;
+    int minIterations = 2;                  ///< pressure iterations at least
+    int maxIterations = 100;                ///< pressure iterations at most
     float cflNumber = 0.4f;                 ///< dt ≤ cfl · h / (c + |v|max)
     float forceNumber = 0.25f;              ///< dt ≤ forceNumber · √(h / |a|max)
     float minDt = 1e-6f;                    ///< s; a step never goes below this

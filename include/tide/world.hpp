@@ -28,7 +28,9 @@ struct WorldStats {
     float meanDensityError = 0.0f;      ///< mean |ρ − ρ0| / ρ0 over all particles, last step
     float meanCompression = 0.0f;       ///< mean max(ρ − ρ0, 0) / ρ0 (SPlisHSPlasH's measure)
     std::uint64_t emitterCapacityHits = 0;  ///< layers an emitter could not emit: world full
+    int lastPressureIterations = 0;     ///< iterations of the last step's pressure solve (0: explicit)
     // Running totals over every step since creation:
+    std::uint64_t pressureIterationsSum = 0;
     double dtMin = 0.0;                 ///< s, shortest step (0 before the first)
     double dtMax = 0.0;                 ///< s, longest step
     double dtSum = 0.0;                 ///< s, simulated time stepped

@@ -41,7 +41,11 @@ void validateWorldDef(const WorldDef& d) {
     const SolverDef& s = d.solver;
     if (!(s.soundSpeed >= 0.0f) || !std::isfinite(s.soundSpeed))
         throw std::invalid_argument("solver.soundSpeed: must be >= 0 (0 = automatic), got " + show(s.soundSpeed));
-    requireInRange("solver.xsph", s.xsph, 0.0f, 1.0f);
+    if (s.xsph >= 0.0f) requireInRange("solver.xsph", s.xsph, 0.0f, 1.0f);
+    requireInRange("solver.maxDensityError", s.maxDensityError, 1e-6f, 0.5f);
+    if (s.minIterations < 0 || s.maxIterations < std::max(1, s.minIterations))
+        throw std::invalid_argument("solver.maxIterations: must be >= max(1, minIterations), got " +
+                                    std::to_string(s.maxIterations));
     requireInRange("solver.cflNumber", s.cflNumber, 1e-4f, 1.0f);
     requireInRange("solver.forceNumber", s.forceNumber, 1e-4f, 1.0f);
     requirePositive("solver.minDt", s.minDt);
@@ -59,15 +63,16 @@ void validateMaterial(const MaterialDef& m) {
 
 /// Σ_k W_poly6(|k|·s) over the cubic lattice: a lattice particle of mass ρ0 / this sum has
 /// exactly the rest density inside a filled block, so blocks start at rest.
-float latticeKernelSum(float spacing, float h) {
+float latticeKernelSum(DensityKernel kernel, float spacing, float h) {
     const kernels::Poly6 poly6(h);
+    const kernels::CubicSpline cubic(h);
     const int reach = static_cast<int>(std::ceil(h / spacing));
     double sum = 0.0;
     for (int z = -reach; z <= reach; ++z)
         for (int y = -reach; y <= reach; ++y)
             for (int x = -reach; x <= reach; ++x) {
                 const glm::vec3 r = spacing * glm::vec3(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
-                sum += poly6.valueSq(glm::dot(r, r));
+                sum += kernel == DensityKernel::Poly6 ? poly6.valueSq(glm::dot(r, r)) : cubic.value(glm::length(r));
             }
     return static_cast<float>(sum);
 }
@@ -78,6 +83,7 @@ struct World::Impl {
     WorldDef def;
     int threads;
     float h;
+    std::unique_ptr<Solver> solver;
     float latticeSum;
     std::vector<MaterialDef> materials;
     ParticleStore particles;
@@ -85,7 +91,6 @@ struct World::Impl {
     NeighborList neighbors;
     BoundaryParticles boundary;
     NeighborList boundaryNeighbors;
-    std::unique_ptr<Solver> solver;
     std::vector<EmitterState> emitters;
     std::vector<ObstacleDef> obstacles;
     double time = 0.0;
@@ -95,7 +100,8 @@ struct World::Impl {
 
     explicit Impl(const WorldDef& d)
         : def(d), threads(resolveThreadCount(d.threads)), h(d.particleSpacing * d.supportRatio),
-          latticeSum(latticeKernelSum(d.particleSpacing, h)), solver(makeSolver(d.solver.method)),
+          solver(makeSolver(d.solver.method)),
+          latticeSum(latticeKernelSum(solver->densityKernel(), d.particleSpacing, h)),
           soundSpeed(d.solver.soundSpeed) {
         if (def.walls) {
             const int layers = static_cast<int>(std::ceil(h / def.particleSpacing));
@@ -313,11 +319,14 @@ double World::step(double maxDt) {
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
                     w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.threads, maxDt};
     const double dt = w.solver->step(ctx);
+    w.stats.lastPressureIterations = ctx.pressureIterations;
+    w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);
+    const float margin = w.solver->wallMargin() * w.def.particleSpacing;
     if (w.def.walls) {
-        const WallBox walls{w.def.domainMin, w.def.domainMax, 0.5f * w.def.particleSpacing, w.def.wallRestitution};
+        const WallBox walls{w.def.domainMin, w.def.domainMax, margin, w.def.wallRestitution};
         walls.enforce(w.particles, w.threads);
     }
-    projectOutOfObstacles(w.obstacles, w.particles, 0.5f * w.def.particleSpacing, w.threads);
+    projectOutOfObstacles(w.obstacles, w.particles, margin, w.threads);
     w.updateStats(dt);
     w.emit(w.time, dt);
     w.time += dt;

@@ -81,7 +81,7 @@ double ClassicMuller2003::step(StepContext& ctx) {
 
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
-    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph, ctx.threads);
+    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.25f, ctx.threads);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     return dt;
 }

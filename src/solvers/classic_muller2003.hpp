@@ -26,6 +26,10 @@ namespace tide {
 class ClassicMuller2003 final : public Solver {
 public:
     [[nodiscard]] std::string_view name() const override { return "classic"; }
+    [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::Poly6; }
+    /// Müller's mirrored boundary pressure (V_b p_i) is too soft to hold particles at the
+    /// lattice position half a spacing from a wall; the projection does it.
+    [[nodiscard]] float wallMargin() const override { return 0.5f; }
     double step(StepContext& ctx) override;
 
 private:

@@ -32,7 +32,11 @@ struct StepContext {
     const NeighborList& boundaryNeighbors;  ///< boundary particles near each fluid particle
     int threads;
     double maxDt;            ///< the step may not be longer (e.g. to land on a frame time)
+    int pressureIterations = 0;  ///< out: iterations the pressure solve took this step
 };
+
+/// The kernel a solver computes density with: particle masses are calibrated with it.
+enum class DensityKernel { Poly6, CubicSpline };
 
 /// A pressure/viscosity solver. step() computes densities and forces for the current
 /// positions, picks a stable dt ≤ ctx.maxDt, and advances velocities and positions.
@@ -41,6 +45,10 @@ class Solver {
 public:
     virtual ~Solver() = default;
     [[nodiscard]] virtual std::string_view name() const = 0;
+    [[nodiscard]] virtual DensityKernel densityKernel() const = 0;
+    /// Closest a particle centre may come to a wall or obstacle, in particle spacings: where
+    /// the projection after each step puts strays back.
+    [[nodiscard]] virtual float wallMargin() const { return 0.1f; }
     /// Returns the length of the step taken, s.
     virtual double step(StepContext& ctx) = 0;
 };

@@ -3,6 +3,8 @@
 #include <tide/world.hpp>
 
 #include "solvers/classic_muller2003.hpp"
+#include "solvers/dfsph_bender2017.hpp"
+#include "solvers/wcsph_becker2007.hpp"
 #include "solvers/solver.hpp"
 
 namespace tide {
@@ -13,7 +15,9 @@ struct Entry {
     std::unique_ptr<Solver> (*make)();
 };
 constexpr Entry kSolvers[] = {
-    {"classic", [] () -> std::unique_ptr<Solver> { return std::make_unique<ClassicMuller2003>(); }},
+    {"classic", []() -> std::unique_ptr<Solver> { return std::make_unique<ClassicMuller2003>(); }},
+    {"wcsph", []() -> std::unique_ptr<Solver> { return std::make_unique<WcsphBecker2007>(); }},
+    {"dfsph", []() -> std::unique_ptr<Solver> { return std::make_unique<DfsphBender2017>(); }},
 };
 }  // namespace
 

@@ -10,8 +10,18 @@
 
 namespace tide {
 
+/// The step to take when `remaining` seconds are left before a frame time: never a sliver.
+/// A last step much shorter than the stable one is harmful, not just wasteful: an
+/// incompressible solver removes the density error it finds within the step, so a tiny step
+/// means huge velocities. Two steps of half the remaining time land instead.
+inline double landOn(double stable, double remaining) {
+    if (remaining <= stable) return remaining;
+    if (remaining < 2.0 * stable) return 0.5 * remaining;
+    return stable;
+}
+
 /// dt = min(cfl·d/(c + v), λ_f·√(d/a), 0.125·d²/ν) for particle spacing d (the smoothing
-/// length of those papers, half our support radius), clamped to [minDt, maxDt] and `limit`.
+/// length of those papers, half our support radius), clamped to [minDt, maxDt], landing on `limit` (landOn).
 inline double stableTimeStep(const SolverDef& s, float spacing, float soundSpeed, float maxSpeed, float maxAccel,
                              float maxKinematicViscosity, double limit) {
     const double d = spacing;
@@ -19,7 +29,15 @@ inline double stableTimeStep(const SolverDef& s, float spacing, float soundSpeed
     if (maxAccel > 0.0f) dt = std::min(dt, s.forceNumber * std::sqrt(d / maxAccel));
     if (maxKinematicViscosity > 0.0f) dt = std::min(dt, 0.125 * d * d / maxKinematicViscosity);
     dt = std::clamp(dt, static_cast<double>(s.minDt), static_cast<double>(s.maxDt));
-    return std::min(dt, limit);
+    return landOn(dt, limit);
+}
+
+/// Incompressible solvers: dt = cfl · d / |v|max (Bender & Koschier 2017, §4), clamped to
+/// [minDt, maxDt] and to `limit`; the particle spacing d stands for the particle diameter.
+inline double cflTimeStep(const SolverDef& s, float spacing, float maxSpeed, double limit) {
+    double dt = maxSpeed > 0.0f ? s.cflNumber * spacing / maxSpeed : s.maxDt;
+    dt = std::clamp(dt, static_cast<double>(s.minDt), static_cast<double>(s.maxDt));
+    return landOn(dt, limit);
 }
 
 }  // namespace tide

@@ -1,0 +1,167 @@
+#include "solvers/dfsph_bender2017.hpp"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "core/kernels.hpp"
+#include "core/parallel.hpp"
+#include "solvers/sph_sums.hpp"
+#include "solvers/time_step.hpp"
+
+namespace tide {
+
+namespace {
+/// Particles with fewer neighbours sit at the free surface: their density deficit is
+/// geometric, not compression, so the divergence solve leaves them alone (as SPlisHSPlasH does).
+constexpr std::uint32_t kMinNeighborsForDivergence = 20;
+
+/// Σ_j m_j (v_i − v_j)·∇W_ij + Σ_b Ψ_b v_i·∇W_ib: the rate of change of ρ_i (boundaries at rest).
+float densityRate(const StepContext& ctx, const kernels::CubicSpline& w, std::uint32_t i) {
+    const ParticleStore& p = ctx.particles;
+    const glm::vec3 xi = p.position[i];
+    const glm::vec3 vi = p.velocity[i];
+    float rate = 0.0f;
+    for (const std::uint32_t j : ctx.neighbors.of(i)) {
+        const glm::vec3 rij = xi - p.position[j];
+        rate += p.mass[j] * glm::dot(vi - p.velocity[j], w.gradient(rij, glm::length(rij)));
+    }
+    const float rho0 = ctx.materials[p.material[i]].restDensity;
+    for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+        const glm::vec3 rib = xi - ctx.boundary.position[b];
+        rate += rho0 * ctx.boundary.volume[b] * glm::dot(vi, w.gradient(rib, glm::length(rib)));
+    }
+    return rate;
+}
+}  // namespace
+
+void DfsphBender2017::computeAlpha(StepContext& ctx) {
+    ParticleStore& p = ctx.particles;
+    const kernels::CubicSpline w(ctx.supportRadius);
+    alpha_.resize(p.size());
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+        const glm::vec3 xi = p.position[i];
+        glm::vec3 sumGrad(0.0f);
+        float sumSquares = 0.0f;
+        for (const std::uint32_t j : ctx.neighbors.of(i)) {
+            const glm::vec3 rij = xi - p.position[j];
+            const glm::vec3 g = p.mass[j] * w.gradient(rij, glm::length(rij));
+            sumGrad += g;
+            sumSquares += glm::dot(g, g);
+        }
+        const float rho0 = ctx.materials[p.material[i]].restDensity;
+        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            sumGrad += (rho0 * ctx.boundary.volume[b]) * w.gradient(rib, glm::length(rib));
+        }
+        const float denominator = glm::dot(sumGrad, sumGrad) + sumSquares;
+        alpha_[i] = denominator > 1e-12f ? p.density[i] / denominator : 0.0f;
+    });
+}
+
+void DfsphBender2017::applyPressure(StepContext& ctx) {
+    ParticleStore& p = ctx.particles;
+    const kernels::CubicSpline w(ctx.supportRadius);
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+        const glm::vec3 xi = p.position[i];
+        const float ki = k_[i] / p.density[i];
+        glm::vec3 dv(0.0f);
+        for (const std::uint32_t j : ctx.neighbors.of(i)) {
+            const glm::vec3 rij = xi - p.position[j];
+            dv += (p.mass[j] * (ki + k_[j] / p.density[j])) * w.gradient(rij, glm::length(rij));
+        }
+        const float psi = ctx.materials[p.material[i]].restDensity * ki;
+        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            dv += (ctx.boundary.volume[b] * psi) * w.gradient(rib, glm::length(rib));
+        }
+        p.velocity[i] -= dv;
+    });
+}
+
+int DfsphBender2017::solveDivergence(StepContext& ctx) {
+    ParticleStore& p = ctx.particles;
+    const auto n = p.size();
+    const kernels::CubicSpline w(ctx.supportRadius);
+    source_.resize(n);
+    k_.resize(n);
+    int iteration = 0;
+    for (; iteration < ctx.solver.maxIterations; ++iteration) {
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+            const bool interior = ctx.neighbors.of(i).size() + ctx.boundaryNeighbors.of(i).size() >= kMinNeighborsForDivergence;
+            source_[i] = interior ? std::max(densityRate(ctx, w, i), 0.0f) : 0.0f;  // only compression
+        });
+        // Mean relative compression rate, over the last step's length.
+        double rate = 0.0;
+        for (std::uint32_t i = 0; i < n; ++i) rate += source_[i] / ctx.materials[p.material[i]].restDensity;
+        rate /= std::max<double>(1.0, n);
+        if (iteration >= ctx.solver.minIterations && rate * lastDt_ <= ctx.solver.maxDensityError) break;
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+            k_[i] = source_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
+            pressureSum_[i] += k_[i] / static_cast<float>(lastDt_);
+        });
+        applyPressure(ctx);
+    }
+    return iteration;
+}
+
+int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
+    ParticleStore& p = ctx.particles;
+    const auto n = p.size();
+    const kernels::CubicSpline w(ctx.supportRadius);
+    source_.resize(n);
+    k_.resize(n);
+    int iteration = 0;
+    for (; iteration < ctx.solver.maxIterations; ++iteration) {
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+            const float rho0 = ctx.materials[p.material[i]].restDensity;
+            source_[i] = std::max(p.density[i] + dt * densityRate(ctx, w, i), rho0);  // ρ*, expansion ignored
+        });
+        double error = 0.0;
+        for (std::uint32_t i = 0; i < n; ++i) {
+            const double rho0 = ctx.materials[p.material[i]].restDensity;
+            error += (source_[i] - rho0) / rho0;
+        }
+        error /= std::max<double>(1.0, n);
+        if (iteration >= ctx.solver.minIterations && error <= ctx.solver.maxDensityError) break;
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+            k_[i] = (source_[i] - ctx.materials[p.material[i]].restDensity) * alpha_[i];  // κ·Δt² (eq. 12)
+            pressureSum_[i] += k_[i] / (dt * dt);
+        });
+        // v_i −= Δt Σ m_j (κ_i/ρ_i + κ_j/ρ_j)∇W = Σ m_j (κΔt²_i/ρ_i + …)∇W / Δt
+        for (float& k : k_) k /= dt;
+        applyPressure(ctx);
+    }
+    return iteration;
+}
+
+double DfsphBender2017::step(StepContext& ctx) {
+    ParticleStore& p = ctx.particles;
+    const auto n = p.size();
+    sph::computeDensities(ctx);
+    computeAlpha(ctx);
+    pressureSum_.assign(n, 0.0f);
+    const int divergenceIterations = solveDivergence(ctx);
+
+    sph::addGravityAndViscosity(ctx, accel_);
+    const float nu = sph::maxKinematicViscosity(ctx);
+    SolverDef limits = ctx.solver;
+    if (nu > 0.0f) limits.maxDt = std::min(limits.maxDt, 0.125f * ctx.particleSpacing * ctx.particleSpacing / nu);
+    const double dt = cflTimeStep(limits, ctx.particleSpacing, sph::maxSpeed(ctx), ctx.maxDt);
+    const auto dtf = static_cast<float>(dt);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        p.acceleration[i] = accel_[i];
+        p.velocity[i] += dtf * accel_[i];
+    });
+    const int densityIterations = solveDensity(ctx, dtf);
+    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        p.position[i] += dtf * p.velocity[i];
+        p.pressure[i] = p.density[i] * pressureSum_[i];  // p = ρκ: the equivalent SPH pressure
+    });
+    ctx.pressureIterations = divergenceIterations + densityIterations;
+    lastDt_ = dt;
+    return dt;
+}
+
+}  // namespace tide

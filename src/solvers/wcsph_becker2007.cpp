@@ -1,0 +1,51 @@
+#include "solvers/wcsph_becker2007.hpp"
+
+#include <glm/geometric.hpp>
+
+#include "core/kernels.hpp"
+#include "core/parallel.hpp"
+#include "solvers/equation_of_state.hpp"
+#include "solvers/sph_sums.hpp"
+#include "solvers/time_step.hpp"
+
+namespace tide {
+
+double WcsphBecker2007::step(StepContext& ctx) {
+    ParticleStore& p = ctx.particles;
+    const auto n = p.size();
+    sph::computeDensities(ctx);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        p.pressure[i] = pressureFromDensity(EquationOfState::Tait, p.density[i], ctx.materials[p.material[i]].restDensity,
+                                            ctx.soundSpeed, true);
+    });
+    sph::addGravityAndViscosity(ctx, accel_);
+    const kernels::CubicSpline w(ctx.supportRadius);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        const glm::vec3 xi = p.position[i];
+        const float pi = p.pressure[i] / (p.density[i] * p.density[i]);
+        glm::vec3 sum(0.0f);
+        for (const std::uint32_t j : ctx.neighbors.of(i)) {
+            const glm::vec3 rij = xi - p.position[j];
+            sum += (p.mass[j] * (pi + p.pressure[j] / (p.density[j] * p.density[j]))) * w.gradient(rij, glm::length(rij));
+        }
+        const float psi = ctx.materials[p.material[i]].restDensity * pi;
+        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            sum += (ctx.boundary.volume[b] * psi) * w.gradient(rib, glm::length(rib));
+        }
+        p.acceleration[i] = accel_[i] - sum;
+    });
+    const float maxAccel = std::sqrt(parallelMax(n, ctx.threads, [&](std::uint32_t i) {
+        return glm::dot(p.acceleration[i], p.acceleration[i]);
+    }, 0.0f));
+    const double dt = stableTimeStep(ctx.solver, ctx.particleSpacing, ctx.soundSpeed, sph::maxSpeed(ctx), maxAccel,
+                                     sph::maxKinematicViscosity(ctx),
+                                     ctx.maxDt);
+    const auto dtf = static_cast<float>(dt);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
+    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
+    return dt;
+}
+
+}  // namespace tide

@@ -1,0 +1,28 @@
+#pragma once
+/// \file
+/// Weakly compressible SPH after Becker & Teschner 2007, "Weakly compressible SPH for free
+/// surface flows" (SCA 2007): Tait's equation p = B((ρ/ρ0)^7 − 1), B = ρ0c²/7 (eq. 6;
+/// negative pressures clamped), the symmetric pressure force
+///   a_i = −Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij − Σ_b ρ0_i V_b (p_i/ρ_i²) ∇W_ib     (eq. 5;
+/// boundary after Akinci et al. 2012, eq. 10), the cubic spline kernel, Monaghan 2005
+/// physical viscosity, XSPH smoothing, and a CFL/force time step with c = SolverDef::soundSpeed.
+
+#include <vector>
+
+#include "solvers/solver.hpp"
+#include "solvers/xsph_monaghan1989.hpp"
+
+namespace tide {
+
+class WcsphBecker2007 final : public Solver {
+public:
+    [[nodiscard]] std::string_view name() const override { return "wcsph"; }
+    [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::CubicSpline; }
+    double step(StepContext& ctx) override;
+
+private:
+    std::vector<glm::vec3> accel_;
+    XsphFilter xsph_;
+};
+
+}  // namespace tide
