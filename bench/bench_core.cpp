@@ -33,18 +33,28 @@ void BM_NeighborSearch(benchmark::State& state) {
     state.counters["threads"] = world.threads();
 }
 
-void BM_ClassicStep(benchmark::State& state) {
-    tide::World world = tide::scenarios::damBreak(spacingFor(static_cast<int>(state.range(0))));
+/// One step of a solver on the dam break (the column has just been released).
+template <const char* Solver>
+void BM_Step(benchmark::State& state) {
+    tide::World world = tide::scenarios::damBreak(spacingFor(static_cast<int>(state.range(0))), 0, 1.6f, 0.4f, 0.4f,
+                                                  tide::WorldDef{}.reorderInterval, Solver);
     world.step(1.0);
     for (auto _ : state) benchmark::DoNotOptimize(world.step(1.0));
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(world.particles().size()));
     state.counters["particles"] = world.particles().size();
     state.counters["dt_ms"] = 1e3 * world.stats().lastDt;
+    state.counters["iterations"] = world.stats().lastPressureIterations;
     state.counters["threads"] = world.threads();
 }
 
+constexpr char kClassic[] = "classic";
+constexpr char kWcsph[] = "wcsph";
+constexpr char kDfsph[] = "dfsph";
+
 BENCHMARK(BM_NeighborSearch)->Arg(50000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
-BENCHMARK(BM_ClassicStep)->Arg(50000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Step<kClassic>)->Name("BM_ClassicStep")->Arg(50000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Step<kWcsph>)->Name("BM_WcsphStep")->Arg(50000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Step<kDfsph>)->Name("BM_DfsphStep")->Arg(50000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

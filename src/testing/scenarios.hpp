@@ -22,9 +22,10 @@ inline World stillWater(float depth, float width, float spacing, int threads = 0
 
 /// A dam break: a water column `column` wide and high in a corner of a tank `length` long.
 inline World damBreak(float spacing, int threads = 0, float length = 1.6f, float column = 0.4f, float width = 0.4f,
-                       int reorderInterval = WorldDef{}.reorderInterval) {
+                       int reorderInterval = WorldDef{}.reorderInterval, const std::string& solver = "classic") {
     WorldDef def;
     def.reorderInterval = reorderInterval;
+    def.solver.method = solver;
     def.domainMin = {0.0f, 0.0f, 0.0f};
     def.domainMax = {length, 2.0f * column, width};
     def.particleSpacing = spacing;
