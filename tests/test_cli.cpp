@@ -57,6 +57,19 @@ std::string smallScene(const std::string& extra = "") {
   "output": {"fps": 20, "formats": ["vtu"]})" + extra + "\n}\n";
 }
 
+/// Checks that OUT/stats.json holds every contract key and lost no particle; returns its text.
+std::string expectFullStats(const fs::path& out) {
+    std::ifstream file(out / "stats.json");
+    std::stringstream stats;
+    stats << file.rdbuf();
+    for (const char* key : {"particles", "steps", "sim_time", "wall_time", "particle_steps_per_second", "dt_min",
+                            "dt_mean", "dt_max", "max_density_error", "avg_density_error", "particles_lost",
+                            "threads", "solver"})
+        EXPECT_NE(stats.str().find(std::string("\"") + key + "\":"), std::string::npos) << key;
+    EXPECT_NE(stats.str().find("\"particles_lost\": 0"), std::string::npos) << stats.str();
+    return stats.str();
+}
+
 struct BrokenScene {
     const char* what;
     std::string text;
@@ -201,15 +214,8 @@ TEST(Cli, RunWritesEveryFormatAndStats) {
     const Result py = run(check);
     EXPECT_EQ(py.exit, 0) << py.output;
 
-    std::ifstream statsFile(out / "stats.json");
-    std::stringstream stats;
-    stats << statsFile.rdbuf();
-    for (const char* key : {"particles", "steps", "sim_time", "wall_time", "particle_steps_per_second", "dt_min",
-                            "dt_mean", "dt_max", "max_density_error", "avg_density_error", "particles_lost",
-                            "threads", "solver"})
-        EXPECT_NE(stats.str().find(std::string("\"") + key + "\":"), std::string::npos) << key;
-    EXPECT_NE(stats.str().find("\"particles_lost\": 0"), std::string::npos) << stats.str();
-    EXPECT_NE(stats.str().find("\"sim_time\": 0.1"), std::string::npos) << stats.str();
+    const std::string stats = expectFullStats(out);
+    EXPECT_NE(stats.find("\"sim_time\": 0.1"), std::string::npos) << stats;
 }
 
 TEST(Cli, RefusesAnotherRunsFolderUnlessForced) {
@@ -246,14 +252,7 @@ TEST(Cli, ShippedDamBreakShowsProgressAndFullStats) {
     ASSERT_EQ(r.exit, 0) << r.output;
     EXPECT_NE(r.output.find("\r["), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("frame 1/1"), std::string::npos) << r.output;
-    std::ifstream statsFile(out / "stats.json");
-    std::stringstream stats;
-    stats << statsFile.rdbuf();
-    for (const char* key : {"particles", "steps", "sim_time", "wall_time", "particle_steps_per_second", "dt_min",
-                            "dt_mean", "dt_max", "max_density_error", "avg_density_error", "particles_lost",
-                            "threads", "solver"})
-        EXPECT_NE(stats.str().find(std::string("\"") + key + "\":"), std::string::npos) << key;
-    EXPECT_NE(stats.str().find("\"particles_lost\": 0"), std::string::npos) << stats.str();
+    const std::string stats = expectFullStats(out);
 }
 
 TEST(Cli, DivergenceExitsOneAndKeepsEarlierFrames) {

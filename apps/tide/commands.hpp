@@ -24,6 +24,8 @@ struct RunOptions {
 };
 
 int runCommand(const RunOptions& options);
+/// Prints each problem of a bad scene on stderr, prefixed with the file unless it already is.
+void reportSceneProblems(const std::string& file, const std::vector<std::string>& problems);
 int validateCommand(const std::string& scene);
 
 }  // namespace tide::cli

@@ -22,14 +22,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Prints every problem of a bad scene, each prefixed with the file unless it already is.
-void reportSceneError(const std::string& file, const io::SceneError& e) {
-    for (const std::string& problem : e.problems) {
-        if (problem.rfind(file, 0) == 0) std::fprintf(stderr, "%s\n", problem.c_str());
-        else std::fprintf(stderr, "%s: %s\n", file.c_str(), problem.c_str());
-    }
-}
-
 /// The first particle with a non-finite or runaway state, described; empty when all is well.
 std::string findDivergence(const World& world) {
     const ParticleStore& p = world.particles();
@@ -104,7 +96,7 @@ int runCommand(const RunOptions& o) {
     try {
         scene = io::loadScene(o.scene);
     } catch (const io::SceneError& e) {
-        reportSceneError(o.scene, e);
+        reportSceneProblems(o.scene, e.problems);
         return kExitBadInput;
     }
     if (o.endTime) scene.endTime = *o.endTime;
@@ -135,7 +127,7 @@ int runCommand(const RunOptions& o) {
         world.emplace(io::buildWorld(scene));
         prepareOutputFolder(dir, o.force);
     } catch (const io::SceneError& e) {
-        reportSceneError(o.scene, e);
+        reportSceneProblems(o.scene, e.problems);
         return kExitBadInput;
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "%s: %s\n", o.scene.c_str(), e.what());

@@ -7,15 +7,19 @@
 
 namespace tide::cli {
 
+void reportSceneProblems(const std::string& file, const std::vector<std::string>& problems) {
+    for (const std::string& problem : problems) {
+        if (problem.rfind(file, 0) == 0) std::fprintf(stderr, "%s\n", problem.c_str());
+        else std::fprintf(stderr, "%s: %s\n", file.c_str(), problem.c_str());
+    }
+}
+
 int validateCommand(const std::string& file) {
     io::Scene scene;
     try {
         scene = io::loadScene(file);
     } catch (const io::SceneError& e) {
-        for (const std::string& problem : e.problems) {
-            if (problem.rfind(file, 0) == 0) std::fprintf(stderr, "%s\n", problem.c_str());
-            else std::fprintf(stderr, "%s: %s\n", file.c_str(), problem.c_str());
-        }
+        reportSceneProblems(file, e.problems);
         std::fprintf(stderr, "%s: %zu problem%s\n", file.c_str(), e.problems.size(), e.problems.size() == 1 ? "" : "s");
         return kExitBadInput;
     }
