@@ -313,7 +313,6 @@ std::uint32_t World::emitterCount() const { return static_cast<std::uint32_t>(im
 
 double World::step(double maxDt) {
     Impl& w = *impl_;
-    if (w.materials.empty()) w.materials.push_back(MaterialDef{});
     w.resolveSoundSpeed();
     w.rebuildNeighbors();
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
