@@ -40,6 +40,8 @@ TEST(World, RejectsBadDefinitionsNamingTheField) {
     expectRejected(with([](WorldDef& d) { d.solver.minDt = 1.0f; }), "solver.minDt");
     World world{WorldDef{}};
     expectRejected([&] { world.addMaterial(MaterialDef{"oil", -3.0f, 0.1f, {}}); }, "restDensity");
+    expectRejected([&] { world.step(0.0); }, "maxDt");
+    expectRejected([&] { world.advance(-1.0); }, "duration");
     expectRejected([&] { world.addBlock({{0, 0, 0}, {0.1f, 0.1f, 0.1f}, {0, 0, 0}, 7}); }, "material");
 }
 

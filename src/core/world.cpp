@@ -312,6 +312,8 @@ void World::setEmitterActive(std::uint32_t emitter, bool active) {
 std::uint32_t World::emitterCount() const { return static_cast<std::uint32_t>(impl_->emitters.size()); }
 
 double World::step(double maxDt) {
+    if (!(maxDt > 0.0))
+        throw std::invalid_argument("maxDt: must be > 0, got " + std::to_string(maxDt));
     Impl& w = *impl_;
     w.resolveSoundSpeed();
     w.rebuildNeighbors();
