@@ -79,6 +79,13 @@ void DfsphBender2017::applyPressure(StepContext& ctx) {
     });
 }
 
+double DfsphBender2017::meanRelativeSource(const StepContext& ctx) const {
+    const ParticleStore& p = ctx.particles;
+    double sum = 0.0;
+    for (std::uint32_t i = 0; i < p.size(); ++i) sum += source_[i] / ctx.materials[p.material[i]].restDensity;
+    return sum / std::max<double>(1.0, p.size());
+}
+
 int DfsphBender2017::solveDivergence(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
@@ -92,10 +99,8 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             source_[i] = interior ? std::max(densityRate(ctx, w, i), 0.0f) : 0.0f;  // only compression
         });
         // Mean relative compression rate, over the last step's length.
-        double rate = 0.0;
-        for (std::uint32_t i = 0; i < n; ++i) rate += source_[i] / ctx.materials[p.material[i]].restDensity;
-        rate /= std::max<double>(1.0, n);
-        if (iteration >= ctx.solver.minIterations && rate * lastDt_ <= ctx.solver.maxDensityError) break;
+        if (iteration >= ctx.solver.minIterations && meanRelativeSource(ctx) * lastDt_ <= ctx.solver.maxDensityError)
+            break;
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             k_[i] = source_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
             pressureSum_[i] += k_[i] / static_cast<float>(lastDt_);
@@ -115,17 +120,12 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const float rho0 = ctx.materials[p.material[i]].restDensity;
-            source_[i] = std::max(p.density[i] + dt * densityRate(ctx, w, i), rho0);  // ρ*, expansion ignored
+            // ρ* − ρ0, expansion ignored
+            source_[i] = std::max(p.density[i] + dt * densityRate(ctx, w, i) - rho0, 0.0f);
         });
-        double error = 0.0;
-        for (std::uint32_t i = 0; i < n; ++i) {
-            const double rho0 = ctx.materials[p.material[i]].restDensity;
-            error += (source_[i] - rho0) / rho0;
-        }
-        error /= std::max<double>(1.0, n);
-        if (iteration >= ctx.solver.minIterations && error <= ctx.solver.maxDensityError) break;
+        if (iteration >= ctx.solver.minIterations && meanRelativeSource(ctx) <= ctx.solver.maxDensityError) break;
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            k_[i] = (source_[i] - ctx.materials[p.material[i]].restDensity) * alpha_[i];  // κ·Δt² (eq. 12)
+            k_[i] = source_[i] * alpha_[i];  // κ·Δt² (eq. 12)
             pressureSum_[i] += k_[i] / (dt * dt);
         });
         // v_i −= Δt Σ m_j (κ_i/ρ_i + κ_j/ρ_j)∇W = Σ m_j (κΔt²_i/ρ_i + …)∇W / Δt

@@ -32,11 +32,14 @@ private:
     int solveDivergence(StepContext& ctx);
     /// Corrects the predicted velocities so the next positions have rest density; returns iterations.
     int solveDensity(StepContext& ctx, float dt);
+    /// Mean over particles of source_[i] / ρ0_i: the solves' convergence measure (serial, so
+    /// it does not depend on the thread count).
+    [[nodiscard]] double meanRelativeSource(const StepContext& ctx) const;
     /// v_i −= Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij + Σ_b Ψ_b (k_i/ρ_i) ∇W_ib for the current k_.
     void applyPressure(StepContext& ctx);
 
     std::vector<float> alpha_;
-    std::vector<float> source_;        ///< Dρ/Dt (divergence) or ρ* (density), per particle
+    std::vector<float> source_;        ///< Dρ/Dt (divergence) or ρ* − ρ0 (density), per particle
     std::vector<float> k_;             ///< κ·Δt (divergence) or κ·Δt² (density) of one iteration
     std::vector<float> pressureSum_;   ///< Σ over iterations, for the pressure output
     std::vector<glm::vec3> accel_;
