@@ -90,7 +90,8 @@ struct World::Impl {
     UniformGrid grid;
     NeighborList neighbors;
     BoundaryParticles boundary;
-    NeighborList boundaryNeighbors;
+    NeighborList boundaryNeighbors;       ///< boundary particles near each fluid particle
+    NeighborList boundaryFluidNeighbors;  ///< fluid particles near each boundary particle
     std::vector<EmitterState> emitters;
     std::vector<ObstacleDef> obstacles;
     double time = 0.0;
@@ -168,6 +169,8 @@ struct World::Impl {
         }
         neighbors.build(grid, particles.position, h, threads);
         boundaryNeighbors.buildCross(boundary.grid, boundary.position, particles.position, h, threads);
+        if (solver->usesWallPressure())
+            boundaryFluidNeighbors.buildCross(grid, particles.position, boundary.position, h, threads);
     }
 
     void emit(double t0, double dt) {
@@ -318,7 +321,7 @@ double World::step(double maxDt) {
     w.resolveSoundSpeed();
     w.rebuildNeighbors();
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
-                    w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.threads, maxDt};
+                    w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.boundaryFluidNeighbors, w.threads, maxDt};
     const double dt = w.solver->step(ctx);
     w.stats.lastPressureIterations = ctx.pressureIterations;
     w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);

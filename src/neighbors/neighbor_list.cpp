@@ -124,6 +124,10 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
     chunkBuffers_.resize(static_cast<std::size_t>(chunks));
     auto chunkBegin = [&](int c) { return static_cast<std::uint32_t>(std::uint64_t{n} * c / chunks); };
     const auto sorted = grid.sortedParticles();
+    // Queries farther than the radius from the grid's box have no neighbours (and would
+    // otherwise scan the clamped border cells): most of a container's wall shell.
+    const glm::vec3 lo = grid.origin() - glm::vec3(radius);
+    const glm::vec3 hi = grid.origin() + grid.cellSize() * glm::vec3(grid.dims()) + glm::vec3(radius);
 #pragma omp parallel for schedule(static, 1) num_threads(chunks)
     for (int c = 0; c < chunks; ++c) {
         std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
@@ -131,6 +135,10 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
         for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
             begin_[i] = buffer.size();
             const glm::vec3 q = queries[i];
+            if (grid.empty() || q.x < lo.x || q.y < lo.y || q.z < lo.z || q.x > hi.x || q.y > hi.y || q.z > hi.z) {
+                count_[i] = 0;
+                continue;
+            }
             grid.forEachNeighborRun(grid.cellOf(q), [&](std::uint32_t first, std::uint32_t last) {
                 for (std::uint32_t k = first; k < last; ++k) {
                     const glm::vec3 d = q - gridPositions[sorted[k]];

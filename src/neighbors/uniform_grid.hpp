@@ -23,6 +23,8 @@ public:
     void build(std::span<const glm::vec3> positions, float minCellSize, int threads);
 
     [[nodiscard]] float cellSize() const { return cellSize_; }
+    /// Whether no particle was binned.
+    [[nodiscard]] bool empty() const { return sorted_.empty(); }
     [[nodiscard]] glm::ivec3 dims() const { return dims_; }
     [[nodiscard]] glm::vec3 origin() const { return origin_; }
     /// Cell coordinates of a point, clamped into the grid (non-finite input maps to a border cell).

@@ -30,6 +30,7 @@ public:
     /// Müller's mirrored boundary pressure (V_b p_i) is too soft to hold particles at the
     /// lattice position half a spacing from a wall; the projection does it.
     [[nodiscard]] float wallMargin() const override { return 0.5f; }
+    [[nodiscard]] bool usesWallPressure() const override { return false; }
     double step(StepContext& ctx) override;
 
 private:

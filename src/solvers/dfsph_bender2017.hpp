@@ -6,15 +6,18 @@
 ///   divergence-free solve:  κᵛ_i = (1/Δt) (Dρ_i/Dt) α_i,                         (eq. 15)
 ///   constant-density solve: κ_i = (ρ*_i − ρ0)/Δt² α_i,                            (eq. 12)
 ///   each: v_i −= Δt Σ_j m_j (κ_i/ρ_i + κ_j/ρ_j) ∇W_ij                            (eq. 13)
-/// iterated (Jacobi) until the mean compression is below SolverDef::maxDensityError.
-/// Boundaries are Akinci et al. 2012 particles: Ψ_b = ρ0_i V_b joins the first sum of α and
-/// pushes with Ψ_b κ_i/ρ_i ∇W_ib. Cubic spline kernel, Monaghan 2005 viscosity, CFL time
-/// step (no sound speed: the solver, not the time step, keeps the fluid incompressible).
-/// Not yet: warm start of κ from the previous step (it needs solver state that follows
-/// particle reordering).
+/// iterated until the mean density error is below SolverDef::maxDensityError. The density
+/// solve is a projected Jacobi iteration (κ ≥ 0, weight ½, may fall back after overshooting),
+/// which holds the pressure of a tank at rest to a few per cent of ρgd; the paper's
+/// compression-only increments stop once the mean is met and leave it at ~70 %.
+/// Boundaries are Akinci et al. 2012 particles (Ψ_b = ρ0_i V_b) pushing with
+/// Ψ_b (κ_i + κ_b)/ρ_i ∇W_ib: κ_b mirrors κ_i in the divergence solve and is the wall pressure
+/// of Adami et al. 2012 in the density solve. Cubic spline kernel, Monaghan 2005 viscosity,
+/// CFL time step (no sound speed: the solver, not the time step, keeps the fluid incompressible).
 
 #include <vector>
 
+#include "boundary/wall_pressure_adami2012.hpp"
 #include "solvers/solver.hpp"
 #include "solvers/xsph_monaghan1989.hpp"
 
@@ -35,13 +38,19 @@ private:
     /// Mean over particles of source_[i] / ρ0_i: the solves' convergence measure (serial, so
     /// it does not depend on the thread count).
     [[nodiscard]] double meanRelativeSource(const StepContext& ctx) const;
-    /// v_i −= Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij + Σ_b Ψ_b (k_i/ρ_i) ∇W_ib for the current k_.
-    void applyPressure(StepContext& ctx);
+    /// v_i −= Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij + Σ_b Ψ_b ((k_i + k_b)/ρ_i) ∇W_ib for the
+    /// current k_; boundary particles take `boundaryK`, or mirror k_i when it is empty.
+    void applyPressure(StepContext& ctx, std::span<const float> boundaryK);
 
     std::vector<float> alpha_;
-    std::vector<float> source_;        ///< Dρ/Dt (divergence) or ρ* − ρ0 (density), per particle
+    std::vector<float> source_;        ///< error left: Dρ/Dt (divergence) or |ρ* − ρ0| (density)
+    std::vector<float> residual_;      ///< ρ* − ρ0 of the density solve, signed
     std::vector<float> k_;             ///< κ·Δt (divergence) or κ·Δt² (density) of one iteration
-    std::vector<float> pressureSum_;   ///< Σ over iterations, for the pressure output
+    std::vector<float> pressureSum_;   ///< κᵛ summed over the divergence iterations, for the pressure output
+    std::vector<float> kappa_;         ///< κ of the density solve so far, m²/s²
+    std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
+    std::vector<float> boundaryKappa_; ///< κ_b applied so far this step
+    WallPressure wall_;
     std::vector<glm::vec3> accel_;
     XsphFilter xsph_;
     double lastDt_ = 1e-3;             ///< s; the divergence solve runs before this step's dt is known

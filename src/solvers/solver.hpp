@@ -30,6 +30,7 @@ struct StepContext {
     float soundSpeed;        ///< c, m/s
     const BoundaryParticles& boundary;      ///< static walls (may be empty)
     const NeighborList& boundaryNeighbors;  ///< boundary particles near each fluid particle
+    const NeighborList& boundaryFluidNeighbors;  ///< fluid particles near each boundary particle
     int threads;
     double maxDt;            ///< the step may not be longer (e.g. to land on a frame time)
     int pressureIterations = 0;  ///< out: iterations the pressure solve took this step
@@ -49,6 +50,8 @@ public:
     /// Closest a particle centre may come to a wall or obstacle, in particle spacings: where
     /// the projection after each step puts strays back.
     [[nodiscard]] virtual float wallMargin() const { return 0.1f; }
+    /// Whether step() reads StepContext::boundaryFluidNeighbors (built only then).
+    [[nodiscard]] virtual bool usesWallPressure() const { return true; }
     /// Returns the length of the step taken, s.
     virtual double step(StepContext& ctx) = 0;
 };

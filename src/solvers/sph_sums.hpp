@@ -11,6 +11,15 @@
 
 namespace tide::sph {
 
+/// Pressure mirroring onto boundary particles (Akinci et al. 2012; written out in Ihmsen et
+/// al. 2014, "Implicit incompressible SPH", eq. 13): a boundary particle b takes p_b = p_i
+/// and ρ_b = ρ_i, so it pushes with Ψ_b (p_i/ρ_i² + p_b/ρ_b²) = 2 Ψ_b p_i/ρ_i². With a
+/// factor 1 the wall holds only half of what the fluid beside a particle pushes it with:
+/// particles at walls are driven into them, most at edges and corners. (The density solves
+/// replace p_b by the wall pressure of Adami et al. 2012; this factor is their estimate of
+/// how κ_b follows κ_i.)
+inline constexpr float kBoundaryPressureMirror = 2.0f;
+
 /// ρ_i = Σ_j m_j W_ij + ρ0_i Σ_b V_b W_ib (Akinci et al. 2012, eq. 4), cubic spline.
 inline void computeDensities(StepContext& ctx) {
     ParticleStore& p = ctx.particles;

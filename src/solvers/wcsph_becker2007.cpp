@@ -19,6 +19,12 @@ double WcsphBecker2007::step(StepContext& ctx) {
                                             ctx.soundSpeed, true);
     });
     sph::addGravityAndViscosity(ctx, accel_);
+    // Walls take the pressure of the fluid around them, extrapolated hydrostatically.
+    kappa_.resize(n);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) { kappa_[i] = p.pressure[i] / p.density[i]; });
+    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.gravity, ctx.supportRadius, ctx.threads);
+    wall_.update(ctx.boundaryFluidNeighbors, p.position, ctx.boundary.position, kappa_, ctx.supportRadius, ctx.threads);
+    const auto wallKappa = wall_.kappa();
     const kernels::CubicSpline w(ctx.supportRadius);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
@@ -28,10 +34,11 @@ double WcsphBecker2007::step(StepContext& ctx) {
             const glm::vec3 rij = xi - p.position[j];
             sum += (p.mass[j] * (pi + p.pressure[j] / (p.density[j] * p.density[j]))) * w.gradient(rij, glm::length(rij));
         }
-        const float psi = ctx.materials[p.material[i]].restDensity * pi;
+        // Ψ_b (p_i/ρ_i² + p_b/ρ_b²) with ρ_b = ρ_i (Akinci et al. 2012, Adami et al. 2012).
+        const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 rib = xi - ctx.boundary.position[b];
-            sum += (ctx.boundary.volume[b] * psi) * w.gradient(rib, glm::length(rib));
+            sum += (ctx.boundary.volume[b] * psi * (kappa_[i] + wallKappa[b])) * w.gradient(rib, glm::length(rib));
         }
         p.acceleration[i] = accel_[i] - sum;
     });

@@ -3,12 +3,14 @@
 /// Weakly compressible SPH after Becker & Teschner 2007, "Weakly compressible SPH for free
 /// surface flows" (SCA 2007): Tait's equation p = B((ρ/ρ0)^7 − 1), B = ρ0c²/7 (eq. 6;
 /// negative pressures clamped), the symmetric pressure force
-///   a_i = −Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij − Σ_b ρ0_i V_b (p_i/ρ_i²) ∇W_ib     (eq. 5;
-/// boundary after Akinci et al. 2012, eq. 10), the cubic spline kernel, Monaghan 2005
+///   a_i = −Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij − Σ_b ρ0_i V_b (p_i/ρ_i² + p_b/ρ_i²) ∇W_ib
+/// (eq. 5; boundary particles after Akinci et al. 2012 with the wall pressure p_b of Adami et
+/// al. 2012, see boundary/wall_pressure_adami2012.hpp), the cubic spline kernel, Monaghan 2005
 /// physical viscosity, XSPH smoothing, and a CFL/force time step with c = SolverDef::soundSpeed.
 
 #include <vector>
 
+#include "boundary/wall_pressure_adami2012.hpp"
 #include "solvers/solver.hpp"
 #include "solvers/xsph_monaghan1989.hpp"
 
@@ -22,6 +24,8 @@ public:
 
 private:
     std::vector<glm::vec3> accel_;
+    std::vector<float> kappa_;  ///< p/ρ per particle, m²/s²
+    WallPressure wall_;
     XsphFilter xsph_;
 };
 

@@ -1,0 +1,69 @@
+#pragma once
+/// \file
+/// Pressure of boundary particles extrapolated from the fluid around them (Adami, Hu &
+/// Adams 2012, "A generalized wall boundary condition for smoothed particle hydrodynamics",
+/// J. Comput. Phys. 231, eq. 27, for walls at rest):
+///   p_b = (Σ_f p_f W_bf + ρ_f g·Σ_f (x_b − x_f) W_bf) / Σ_f W_bf,
+/// kept here as κ_b = p_b/ρ (the solvers' unit). Mirroring p_b = p_i (Akinci et al. 2012)
+/// gives a particle beside a vertical wall only the fluid half of the pressure gradient that
+/// carries its weight, so particles slide down walls and stir the whole tank; with the
+/// hydrostatic term the wall carries its share and a tank at rest stays at rest.
+/// Walls never pull: κ_b ≥ 0.
+
+#include <span>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "boundary/boundary_particles.hpp"
+#include "core/kernels.hpp"
+#include "core/parallel.hpp"
+#include "neighbors/neighbor_list.hpp"
+
+namespace tide {
+
+class WallPressure {
+public:
+    /// Kernel sums of each boundary particle over the fluid near it, at the current positions.
+    void prepare(const BoundaryParticles& boundary, const NeighborList& fluidNear, std::span<const glm::vec3> fluid,
+                 const glm::vec3& gravity, float supportRadius, int threads) {
+        const kernels::CubicSpline w(supportRadius);
+        const auto n = static_cast<std::uint32_t>(boundary.position.size());
+        weightSum_.assign(n, 0.0f);
+        gravityTerm_.assign(n, 0.0f);
+        kappa_.assign(n, 0.0f);
+        parallelFor(n, threads, [&](std::uint32_t b) {
+            const glm::vec3 xb = boundary.position[b];
+            float weights = 0.0f, lift = 0.0f;
+            for (const std::uint32_t f : fluidNear.of(b)) {
+                const float wbf = w.value(glm::length(xb - fluid[f]));
+                weights += wbf;
+                lift += glm::dot(gravity, xb - fluid[f]) * wbf;
+            }
+            weightSum_[b] = weights;
+            gravityTerm_[b] = lift;
+        });
+    }
+
+    /// κ_b from the fluid's κ_f; returns nothing, read with kappa().
+    void update(const NeighborList& fluidNear, std::span<const glm::vec3> fluid, std::span<const glm::vec3> boundary,
+                std::span<const float> fluidKappa, float supportRadius, int threads) {
+        const kernels::CubicSpline w(supportRadius);
+        parallelFor(static_cast<std::uint32_t>(kappa_.size()), threads, [&](std::uint32_t b) {
+            if (weightSum_[b] <= 0.0f) return;
+            float sum = gravityTerm_[b];
+            for (const std::uint32_t f : fluidNear.of(b)) sum += fluidKappa[f] * w.value(glm::length(boundary[b] - fluid[f]));
+            kappa_[b] = std::max(sum / weightSum_[b], 0.0f);
+        });
+    }
+
+    [[nodiscard]] std::span<const float> kappa() const { return kappa_; }
+    [[nodiscard]] std::span<float> kappa() { return kappa_; }
+
+private:
+    std::vector<float> weightSum_;    ///< Σ_f W_bf
+    std::vector<float> gravityTerm_;  ///< g·Σ_f (x_b − x_f) W_bf, m²/s²
+    std::vector<float> kappa_;        ///< κ_b = p_b/ρ, m²/s²
+};
+
+}  // namespace tide
