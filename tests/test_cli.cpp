@@ -302,4 +302,20 @@ TEST(Cli, ShippedScenesValidate) {
     }
 }
 
+TEST(Cli, ShippedScenesMatchTheSchema) {
+    // Debian's python3-jsonschema checks scene.schema.json itself and every shipped scene.
+    const std::string check = "/usr/bin/python3 -c \""
+        "import glob, json, os, sys, jsonschema\n"
+        "d = sys.argv[1]\n"
+        "schema = json.load(open(os.path.join(d, 'scene.schema.json')))\n"
+        "jsonschema.Draft202012Validator.check_schema(schema)\n"
+        "v = jsonschema.Draft202012Validator(schema)\n"
+        "bad = [(f, e.message) for f in sorted(glob.glob(os.path.join(d, '*.json'))) if not f.endswith('schema.json')\n"
+        "       for e in v.iter_errors(json.load(open(f)))]\n"
+        "assert not bad, bad\n"
+        "print('schema ok')\" " + std::string(TIDE_SCENES_DIR);
+    const Result r = run(check);
+    EXPECT_EQ(r.exit, 0) << r.output;
+}
+
 }  // namespace
