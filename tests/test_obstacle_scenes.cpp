@@ -245,6 +245,7 @@ TEST(ObstacleScenes, ProblemsNameTheJsonPath) {
         {R"([{"type": "mesh", "file": "models/open.obj"}])", {"obstacles[0].file", "models/open.obj", "not closed"}},
         {R"([{"type": "mesh", "file": "models/cube.obj", "scale": 0}])", {"obstacles[0].scale"}},
         {R"([{"type": "mesh", "file": "models/cube.obj", "scale": [1, -1, 1]}])", {"obstacles[0].scale"}},
+        {R"([{"type": "mesh", "file": "models/cube.obj", "scale": "big"}])", {"obstacles[0].scale: must be a number or 3 numbers"}},
         {R"([{"type": "mesh", "file": "models/cube.obj", "translate": [1, 2]}])", {"obstacles[0].translate"}},
         {R"([{"type": "mesh", "file": "models/cube.obj", "rotate": "90"}])", {"obstacles[0].rotate"}},
         {R"([{"type": "mesh", "file": "models/cube.obj", "scael": 2}])", {"obstacles[0].scael", "did you mean \"scale\""}},

@@ -294,6 +294,19 @@ std::optional<glm::vec3> readDirection(Reader& r, const json& j, const char* key
     return glm::normalize(*v);
 }
 
+/// A mesh's `scale`: a number or 3 numbers, all > 0 (default 1).
+std::optional<glm::vec3> readMeshScale(Reader& r, const json& j, const std::string& path) {
+    if (!j.contains("scale")) return glm::vec3(1.0f);
+    const json& v = j.at("scale");
+    const auto positive = [](const json& e) { return e.is_number() && e.get<double>() > 0.0 && e.get<double>() <= 1e6; };
+    if (positive(v)) return glm::vec3(static_cast<float>(v.get<double>()));
+    if (v.is_array() && v.size() == 3 && std::all_of(v.begin(), v.end(), positive))
+        return glm::vec3(static_cast<float>(v[0].get<double>()), static_cast<float>(v[1].get<double>()),
+                         static_cast<float>(v[2].get<double>()));
+    r.fail(join(path, "scale"), "must be a number or 3 numbers, all > 0, got " + show(v));
+    return std::nullopt;
+}
+
 /// One entry of "obstacles"; lengths scaled by `scale`, mesh files relative to `baseDirectory`.
 std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::string& path, float scale,
                                         const std::filesystem::path& baseDirectory) {
@@ -340,21 +353,9 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate"})) return std::nullopt;
         const auto file = r.string(j, "file", path, true);
         MeshPlacement placement;
-        bool ok = true;
-        if (j.contains("scale") && j.at("scale").is_number()) {
-            if (auto s = r.number(j, "scale", path, false, 0.0, 1e6, true)) placement.scale = glm::vec3(static_cast<float>(*s));
-            else ok = false;
-        } else if (j.contains("scale")) {
-            const auto s = r.vec3(j, "scale", path, false);
-            if (s && glm::any(glm::lessThanEqual(*s, glm::vec3(0.0f)))) {
-                r.fail(join(path, "scale"), "must be a number or 3 numbers, all > 0, got " + show(j.at("scale")));
-                ok = false;
-            } else if (s) {
-                placement.scale = *s;
-            } else {
-                ok = false;
-            }
-        }
+        const auto meshScale = readMeshScale(r, j, path);
+        bool ok = meshScale.has_value();
+        if (meshScale) placement.scale = *meshScale;
         if (j.contains("rotate")) {
             if (auto v = r.vec3(j, "rotate", path, false)) placement.rotateDegrees = *v;
             else ok = false;
