@@ -3,10 +3,11 @@
 # quiet when everything is present.
 set -euo pipefail
 
-# build: compiler, CMake, GLM, JSON, CLI11; tests: GoogleTest, meshio (reads our VTU
-# frames), script (a pseudo-terminal); benchmarks: Google Benchmark.
-packages=(cmake make g++ libglm-dev nlohmann-json3-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev
-          python3-meshio bsdutils)
+# build: compiler, CMake, GLM, JSON, CLI11, tinyobjloader (OBJ obstacle meshes); tests: GoogleTest,
+# meshio (reads our VTU frames), jsonschema (checks scenes against their schema), script (a
+# pseudo-terminal); benchmarks: Google Benchmark.
+packages=(cmake make g++ libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libgtest-dev libgmock-dev
+          libbenchmark-dev python3-meshio python3-jsonschema bsdutils)
 
 missing=()
 for pkg in "${packages[@]}"; do

@@ -127,6 +127,9 @@ std::vector<BrokenScene> brokenScenes() {
         {"unknown obstacle type", smallScene(R"(, "obstacles": [{"type": "cone"}])"), "obstacles[0].type"},
         {"sphere without radius", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.1, 0.1, 0.1]}])"), "obstacles[0].radius"},
         {"box obstacle with radius", smallScene(R"(, "obstacles": [{"type": "box", "min": [0, 0, 0], "max": [0.1, 0.1, 0.1], "radius": 1}])"), "obstacles[0].radius"},
+        {"cylinder without axis", smallScene(R"(, "obstacles": [{"type": "cylinder", "center": [0.1, 0.1, 0.1], "radius": 0.02, "length": 0.1}])"), "obstacles[0].axis"},
+        {"plane with zero normal", smallScene(R"(, "obstacles": [{"type": "plane", "point": [0, 0.05, 0], "normal": [0, 0, 0]}])"), "obstacles[0].normal"},
+        {"mesh file missing", smallScene(R"(, "obstacles": [{"type": "mesh", "file": "models/no_such_rock.obj"}])"), "obstacles[0].file: models/no_such_rock.obj"},
         {"unit scale zero", smallScene(R"(, "unit_scale": 0)"), "unit_scale"},
     };
 }
@@ -255,6 +258,30 @@ TEST(Cli, ShippedDamBreakShowsProgressAndFullStats) {
     const std::string stats = expectFullStats(out);
 }
 
+TEST(Cli, OpenMeshExitsTwoNamingTheFieldAndFile) {
+    // A cube without its top: not a solid. The mesh path is relative to the scene file.
+    const fs::path scene = writeScene("open_mesh", smallScene(R"(, "obstacles": [{"type": "mesh", "file": "lidless.obj"}])"));
+    std::ofstream(scene.parent_path() / "lidless.obj") << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                                                          "f 1 4 3 2\nf 1 2 6 5\nf 3 4 8 7\nf 1 5 8 4\nf 2 3 7 6\n";
+    for (const std::string& command : {" validate " + scene.string(), " run " + scene.string() + " --out " + scratch("open_mesh_out").string()}) {
+        const Result r = run(kTide + command);
+        EXPECT_EQ(r.exit, 2) << command << r.output;
+        EXPECT_NE(r.output.find("obstacles[0].file: lidless.obj"), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find("not closed"), std::string::npos) << r.output;
+    }
+}
+
+TEST(Cli, ShippedObstacleDamBreakLosesNoParticle) {
+    const fs::path out = scratch("dam_break_obstacles_out");
+    const std::string scene = std::string(TIDE_SCENES_DIR) + "/dam_break_obstacles.json";
+    const Result validate = run(kTide + " validate " + scene);
+    EXPECT_EQ(validate.exit, 0) << validate.output;
+    EXPECT_NE(validate.output.find("mesh of 320 triangles"), std::string::npos) << validate.output;
+    const Result r = run(kTide + " run " + scene + " --quiet --end-time 0.1 --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    expectFullStats(out);  // particles_lost 0 at every frame
+}
+
 TEST(Cli, DivergenceExitsOneAndKeepsEarlierFrames) {
     // A time step forced 40× beyond the viscous stability limit: the fluid collapses.
     const std::string exploding = replace(smallScene(R"(, "solver": {"min_dt": 0.01, "max_dt": 0.01})"),
@@ -273,6 +300,22 @@ TEST(Cli, ShippedScenesValidate) {
         const Result r = run(kTide + " validate " + entry.path().string());
         EXPECT_EQ(r.exit, 0) << entry.path() << "\n" << r.output;
     }
+}
+
+TEST(Cli, ShippedScenesMatchTheSchema) {
+    // Debian's python3-jsonschema checks scene.schema.json itself and every shipped scene.
+    const std::string check = "/usr/bin/python3 -c \""
+        "import glob, json, os, sys, jsonschema\n"
+        "d = sys.argv[1]\n"
+        "schema = json.load(open(os.path.join(d, 'scene.schema.json')))\n"
+        "jsonschema.Draft202012Validator.check_schema(schema)\n"
+        "v = jsonschema.Draft202012Validator(schema)\n"
+        "bad = [(f, e.message) for f in sorted(glob.glob(os.path.join(d, '*.json'))) if not f.endswith('schema.json')\n"
+        "       for e in v.iter_errors(json.load(open(f)))]\n"
+        "assert not bad, bad\n"
+        "print('schema ok')\" " + std::string(TIDE_SCENES_DIR);
+    const Result r = run(check);
+    EXPECT_EQ(r.exit, 0) << r.output;
 }
 
 }  // namespace

@@ -1,7 +1,9 @@
 // `tide validate`: check a scene and say what it would simulate.
 #include <cstdio>
+#include <string>
 
 #include <tide/io/scene.hpp>
+#include <tide/triangle_mesh.hpp>
 
 #include "commands.hpp"
 
@@ -38,7 +40,21 @@ int validateCommand(const std::string& file) {
                     mat.restDensity, mat.viscosity, static_cast<unsigned long long>(size.initialParticles[m]),
                     static_cast<unsigned long long>(size.emittedParticles[m]));
     }
-    std::printf("obstacles  %zu, emitters %zu\n", scene.obstacles.size(), scene.emitters.size());
+    std::string shapes;
+    for (const ObstacleDef& o : scene.obstacles) {
+        shapes += shapes.empty() ? " (" : ", ";
+        switch (o.shape) {
+            case ObstacleDef::Shape::Box: shapes += "box"; break;
+            case ObstacleDef::Shape::Sphere: shapes += "sphere"; break;
+            case ObstacleDef::Shape::Cylinder: shapes += "cylinder"; break;
+            case ObstacleDef::Shape::Plane: shapes += "plane"; break;
+            case ObstacleDef::Shape::Mesh:
+                shapes += "mesh of " + std::to_string(o.mesh->triangles().size()) + " triangles";
+                break;
+        }
+    }
+    if (!shapes.empty()) shapes += ")";
+    std::printf("obstacles  %zu%s, emitters %zu\n", scene.obstacles.size(), shapes.c_str(), scene.emitters.size());
     std::printf("total      up to %llu particles, about %.1f MiB\n",
                 static_cast<unsigned long long>(size.totalParticles), static_cast<double>(size.bytes) / (1 << 20));
     std::printf("ok\n");

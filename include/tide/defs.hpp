@@ -5,11 +5,14 @@
 
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <string>
 
 #include <glm/vec3.hpp>
 
 namespace tide {
+
+class TriangleMesh;  // <tide/triangle_mesh.hpp>
 
 /// Index of a material in a World (0 is the first material added).
 using MaterialIndex = std::uint16_t;
@@ -67,14 +70,26 @@ struct WorldDef {
     SolverDef solver;
 };
 
-/// A fixed solid the fluid flows around, sampled as boundary particles.
+/// A fixed solid the fluid flows around, sampled as boundary particles. Which fields
+/// matter depends on the shape; World::addObstacle validates them.
 struct ObstacleDef {
-    enum class Shape { Box, Sphere };
+    enum class Shape {
+        Box,       ///< axis-aligned box `min`..`max`
+        Sphere,    ///< `center`, `radius`
+        Cylinder,  ///< capped: `center`, `axis`, `radius`, `length` (cap to cap)
+        Plane,     ///< the half-space behind `point` + `normal`: the fluid is on the normal's side
+        Mesh,      ///< a closed triangle mesh, `mesh`
+    };
     Shape shape = Shape::Box;
-    glm::vec3 min{0.0f};     ///< box corner, m
-    glm::vec3 max{0.0f};     ///< box corner, m
-    glm::vec3 center{0.0f};  ///< sphere centre, m
-    float radius = 0.0f;     ///< sphere radius, m
+    glm::vec3 min{0.0f};                 ///< box corner, m
+    glm::vec3 max{0.0f};                 ///< box corner, m
+    glm::vec3 center{0.0f};              ///< sphere or cylinder centre, m
+    float radius = 0.0f;                 ///< sphere or cylinder radius, m
+    glm::vec3 axis{0.0f, 1.0f, 0.0f};    ///< cylinder axis (normalised when added)
+    float length = 0.0f;                 ///< cylinder length along its axis, m
+    glm::vec3 point{0.0f};               ///< a point on the plane, m
+    glm::vec3 normal{0.0f, 1.0f, 0.0f};  ///< plane normal, pointing out of the solid (normalised when added)
+    std::shared_ptr<const TriangleMesh> mesh;  ///< the mesh (shared, immutable), in metres
 };
 
 /// A box filled with particles on a cubic lattice.

@@ -3,6 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/geometric.hpp>
+
+#include "core/parallel.hpp"
+
 namespace tide {
 
 namespace {
@@ -45,10 +49,30 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
     grid.build(position, searchRadius, threads);
 }
 
-void BoundaryParticles::add(std::span<const glm::vec3> points, float particleVolume, float searchRadius, int threads) {
-    position.insert(position.end(), points.begin(), points.end());
+std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float particleVolume, float minSeparation,
+                                     float searchRadius, int threads) {
+    // The grid's cells are at least searchRadius > minSeparation wide, so any particle
+    // within minSeparation of a point lies in the 3×3×3 cells around it.
+    std::vector<std::uint8_t> keep(points.size(), 1);
+    if (!position.empty()) {
+        const auto sorted = grid.sortedParticles();
+        const float limit2 = minSeparation * minSeparation;
+        parallelFor(static_cast<std::uint32_t>(points.size()), threads, [&](std::uint32_t i) {
+            const glm::vec3 x = points[i];
+            grid.forEachNeighborRun(grid.cellOf(x), [&](std::uint32_t begin, std::uint32_t end) {
+                for (std::uint32_t k = begin; k < end && keep[i]; ++k) {
+                    const glm::vec3 d = position[sorted[k]] - x;
+                    if (glm::dot(d, d) < limit2) keep[i] = 0;
+                }
+            });
+        });
+    }
+    const std::size_t before = position.size();
+    for (std::size_t i = 0; i < points.size(); ++i)
+        if (keep[i]) position.push_back(points[i]);
     volume.resize(position.size(), particleVolume);
     grid.build(position, searchRadius, threads);
+    return static_cast<std::uint32_t>(position.size() - before);
 }
 
 }  // namespace tide

@@ -31,7 +31,11 @@ public:
                         float searchRadius, int threads);
 
     /// Add more boundary particles (an obstacle), each of `volume` m³, and rebuild the grid.
-    void add(std::span<const glm::vec3> points, float volume, float searchRadius, int threads);
+    /// Points closer than `minSeparation` to an existing boundary particle are left out:
+    /// where solids overlap (an obstacle and the wall shell, two obstacles) their union is
+    /// sampled once, not twice. Returns how many were added.
+    std::uint32_t add(std::span<const glm::vec3> points, float volume, float minSeparation, float searchRadius,
+                      int threads);
 
     [[nodiscard]] std::uint32_t size() const { return static_cast<std::uint32_t>(position.size()); }
 

@@ -2,56 +2,158 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/common.hpp>
+#include <glm/vec2.hpp>
 #include <glm/geometric.hpp>
+
+#include <tide/triangle_mesh.hpp>
 
 #include "core/parallel.hpp"
 
 namespace tide {
 
-float signedDistance(const ObstacleDef& o, const glm::vec3& x, glm::vec3* normal) {
-    if (o.shape == ObstacleDef::Shape::Sphere) {
-        const glm::vec3 d = x - o.center;
-        const float r = glm::length(d);
-        if (normal) *normal = r > 0.0f ? d / r : glm::vec3(0, 1, 0);
-        return r - o.radius;
+namespace {
+
+/// Signed distance to the 2D box |q| ≤ half around the origin and its gradient (q ≥ 0 per
+/// component: the query is mirrored into the positive quadrant/octant by the caller).
+template <class V>
+float boxDistance(const V& q, const V& half, V& gradient) {
+    const V d = q - half;
+    const V outside = glm::max(d, V(0.0f));
+    const float outsideLength = glm::length(outside);
+    if (outsideLength > 0.0f) {
+        gradient = outside / outsideLength;
+        return outsideLength;
     }
-    // Box: outside, the distance to the nearest point; inside, minus the distance to the nearest face.
-    const glm::vec3 centre = 0.5f * (o.min + o.max);
-    const glm::vec3 half = 0.5f * (o.max - o.min);
-    const glm::vec3 q = glm::abs(x - centre) - half;
-    const glm::vec3 outside = glm::max(q, glm::vec3(0.0f));
-    const float inside = std::min(std::max(q.x, std::max(q.y, q.z)), 0.0f);
-    if (normal) {
-        if (glm::length(outside) > 0.0f) {
-            *normal = glm::sign(x - centre) * outside / glm::length(outside);
-        } else {
-            const int axis = q.x >= q.y && q.x >= q.z ? 0 : (q.y >= q.z ? 1 : 2);
-            *normal = glm::vec3(0.0f);
-            (*normal)[axis] = x[axis] >= centre[axis] ? 1.0f : -1.0f;
-        }
-    }
-    return glm::length(outside) + inside;
+    // Inside: minus the distance to the nearest face.
+    int axis = 0;
+    for (int a = 1; a < static_cast<int>(V::length()); ++a)
+        if (d[a] > d[axis]) axis = a;
+    gradient = V(0.0f);
+    gradient[axis] = 1.0f;
+    return d[axis];
 }
 
-std::vector<glm::vec3> sampleObstacle(const ObstacleDef& o, const glm::vec3& origin, float spacing, float depth) {
-    glm::vec3 lo = o.min, hi = o.max;
-    if (o.shape == ObstacleDef::Shape::Sphere) {
-        lo = o.center - glm::vec3(o.radius);
-        hi = o.center + glm::vec3(o.radius);
+/// Any unit vector perpendicular to a unit vector.
+glm::vec3 perpendicular(const glm::vec3& a) {
+    const glm::vec3 helper = std::abs(a.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 1, 0);
+    return glm::normalize(glm::cross(a, helper));
+}
+
+float boxSignedDistance(const ObstacleDef& o, const glm::vec3& x, glm::vec3* normal) {
+    const glm::vec3 centre = 0.5f * (o.min + o.max);
+    const glm::vec3 r = x - centre;
+    glm::vec3 gradient;
+    const float d = boxDistance(glm::abs(r), 0.5f * (o.max - o.min), gradient);
+    if (normal) *normal = gradient * glm::vec3(r.x >= 0.0f ? 1 : -1, r.y >= 0.0f ? 1 : -1, r.z >= 0.0f ? 1 : -1);
+    return d;
+}
+
+/// A capped cylinder is a 2D box in (distance from the axis, distance along the axis).
+float cylinderSignedDistance(const ObstacleDef& o, const glm::vec3& x, glm::vec3* normal) {
+    const glm::vec3 r = x - o.center;
+    const float along = glm::dot(r, o.axis);
+    const glm::vec3 radial = r - along * o.axis;
+    const float rho = glm::length(radial);
+    glm::vec2 gradient;
+    const float d = boxDistance(glm::vec2(rho, std::abs(along)), glm::vec2(o.radius, 0.5f * o.length), gradient);
+    if (normal) {
+        const glm::vec3 outward = rho > 0.0f ? radial / rho : perpendicular(o.axis);
+        *normal = gradient.x * outward + gradient.y * (along >= 0.0f ? 1.0f : -1.0f) * o.axis;
     }
-    std::vector<glm::vec3> points;
+    return d;
+}
+
+/// Whether x is more than `distance` outside the box [lo, hi].
+bool fartherThan(const glm::vec3& x, const glm::vec3& lo, const glm::vec3& hi, float distance) {
+    const glm::vec3 d = glm::max(glm::max(lo - x, x - hi), glm::vec3(0.0f));
+    return glm::dot(d, d) > distance * distance;
+}
+
+}  // namespace
+
+float signedDistance(const ObstacleDef& o, const glm::vec3& x, glm::vec3* normal) {
+    switch (o.shape) {
+        case ObstacleDef::Shape::Box: return boxSignedDistance(o, x, normal);
+        case ObstacleDef::Shape::Sphere: {
+            const glm::vec3 d = x - o.center;
+            const float r = glm::length(d);
+            if (normal) *normal = r > 0.0f ? d / r : glm::vec3(0, 1, 0);
+            return r - o.radius;
+        }
+        case ObstacleDef::Shape::Cylinder: return cylinderSignedDistance(o, x, normal);
+        case ObstacleDef::Shape::Plane:
+            if (normal) *normal = o.normal;
+            return glm::dot(x - o.point, o.normal);
+        case ObstacleDef::Shape::Mesh: return o.mesh->signedDistance(x, normal);
+    }
+    return std::numeric_limits<float>::infinity();
+}
+
+void obstacleBounds(const ObstacleDef& o, const glm::vec3& clipMin, const glm::vec3& clipMax, glm::vec3& lo,
+                    glm::vec3& hi) {
+    switch (o.shape) {
+        case ObstacleDef::Shape::Box:
+            lo = o.min;
+            hi = o.max;
+            break;
+        case ObstacleDef::Shape::Sphere:
+            lo = o.center - glm::vec3(o.radius);
+            hi = o.center + glm::vec3(o.radius);
+            break;
+        case ObstacleDef::Shape::Cylinder: {
+            // Per axis: half the length times the axis component, plus the cap disc's reach.
+            const glm::vec3 a2 = o.axis * o.axis;
+            const glm::vec3 half = 0.5f * o.length * glm::abs(o.axis) + o.radius * glm::sqrt(glm::max(1.0f - a2, 0.0f));
+            lo = o.center - half;
+            hi = o.center + half;
+            break;
+        }
+        case ObstacleDef::Shape::Plane:
+            lo = clipMin;
+            hi = clipMax;
+            break;
+        case ObstacleDef::Shape::Mesh:
+            lo = o.mesh->boundsMin();
+            hi = o.mesh->boundsMax();
+            break;
+    }
+    lo = glm::max(lo, clipMin);
+    hi = glm::min(hi, clipMax);
+}
+
+std::vector<glm::vec3> sampleObstacle(const ObstacleDef& o, const glm::vec3& origin, float spacing, float depth,
+                                      const glm::vec3& clipMin, const glm::vec3& clipMax, int threads) {
+    glm::vec3 lo, hi;
+    obstacleBounds(o, clipMin, clipMax, lo, hi);
+    if (glm::any(glm::greaterThan(lo, hi))) return {};
     const glm::ivec3 first(glm::floor((lo - origin) / spacing));
     const glm::ivec3 last(glm::ceil((hi - origin) / spacing));
-    for (int k = first.z; k <= last.z; ++k)
-        for (int j = first.y; j <= last.y; ++j)
-            for (int i = first.x; i <= last.x; ++i) {
-                const glm::vec3 x = origin + spacing * (glm::vec3(static_cast<float>(i), static_cast<float>(j),
-                                                                   static_cast<float>(k)) + 0.5f);
-                const float d = signedDistance(o, x);
-                if (d <= 0.0f && d > -depth) points.push_back(x);
+    const glm::ivec3 count = glm::max(last - first + 1, glm::ivec3(0));
+    // One list per lattice row (y, z), joined in row order: the same points in the same
+    // order for any thread count.
+    std::vector<std::vector<glm::vec3>> rows(static_cast<std::size_t>(count.y) * static_cast<std::size_t>(count.z));
+    parallelFor(static_cast<std::uint32_t>(rows.size()), threads, [&](std::uint32_t row) {
+        const int j = first.y + static_cast<int>(row % static_cast<std::uint32_t>(count.y));
+        const int k = first.z + static_cast<int>(row / static_cast<std::uint32_t>(count.y));
+        for (int i = first.x; i <= last.x; ++i) {
+            const glm::vec3 x = origin + spacing * (glm::vec3(static_cast<float>(i), static_cast<float>(j),
+                                                              static_cast<float>(k)) + 0.5f);
+            if (glm::any(glm::lessThan(x, clipMin)) || glm::any(glm::greaterThan(x, clipMax))) continue;
+            float d;
+            if (o.shape == ObstacleDef::Shape::Mesh) {
+                // Only the surface within `depth` matters: far points cost a few box tests.
+                if (!o.mesh->signedDistanceWithin(x, depth, d)) continue;
+            } else {
+                d = signedDistance(o, x);
             }
+            if (d <= 0.0f && d > -depth) rows[row].push_back(x);
+        }
+    });
+    std::vector<glm::vec3> points;
+    for (const auto& row : rows) points.insert(points.end(), row.begin(), row.end());
     return points;
 }
 
@@ -60,6 +162,10 @@ void projectOutOfObstacles(std::span<const ObstacleDef> obstacles, ParticleStore
     if (obstacles.empty()) return;
     parallelFor(particles.size(), threads, [&](std::uint32_t i) {
         for (const ObstacleDef& o : obstacles) {
+            // A mesh's distance is a tree search: skip particles clearly outside its box.
+            if (o.shape == ObstacleDef::Shape::Mesh &&
+                fartherThan(particles.position[i], o.mesh->boundsMin(), o.mesh->boundsMax(), margin))
+                continue;
             glm::vec3 normal;
             const float d = signedDistance(o, particles.position[i], &normal);
             if (d < margin) {

@@ -1,11 +1,13 @@
 #pragma once
 /// \file
-/// Fixed obstacles (boxes, spheres). Each is sampled like the container walls: the fluid's
-/// own lattice continued inside the solid, kept only within a kernel support of its
-/// surface, so a particle resting on it has rest density. After integration, particles that
-/// got inside are projected back out through the nearest surface (half a spacing outside),
-/// losing their inward normal speed.
+/// Fixed obstacles: boxes, spheres, capped cylinders, half-spaces (planes) and closed
+/// triangle meshes. Each is sampled like the container walls: the fluid's own lattice
+/// continued inside the solid, kept only within a kernel support of its surface, so a
+/// particle resting on it has rest density. After integration, particles that got inside
+/// are projected back out through the nearest surface (half a spacing outside), losing
+/// their inward normal speed.
 
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -15,11 +17,18 @@
 
 namespace tide {
 
-/// Signed distance from x to the obstacle's surface (negative inside) and the outward normal.
+/// Signed distance from x to the obstacle's surface (negative inside) and the outward
+/// normal (the direction in which the distance grows). Exact for every shape.
 float signedDistance(const ObstacleDef& obstacle, const glm::vec3& x, glm::vec3* normal = nullptr);
 
-/// Lattice points (min-aligned at `origin` + (k + ½)·spacing) inside the obstacle, no deeper than `depth`.
-std::vector<glm::vec3> sampleObstacle(const ObstacleDef& obstacle, const glm::vec3& origin, float spacing, float depth);
+/// The obstacle's axis-aligned bounding box, clipped to [clipMin, clipMax] (a plane fills the clip box).
+void obstacleBounds(const ObstacleDef& obstacle, const glm::vec3& clipMin, const glm::vec3& clipMax, glm::vec3& lo,
+                    glm::vec3& hi);
+
+/// Lattice points origin + (k + ½)·spacing inside the obstacle and no deeper than `depth`,
+/// within the box [clipMin, clipMax], in a fixed order for any thread count.
+std::vector<glm::vec3> sampleObstacle(const ObstacleDef& obstacle, const glm::vec3& origin, float spacing, float depth,
+                                      const glm::vec3& clipMin, const glm::vec3& clipMax, int threads = 1);
 
 /// Push particles that entered any obstacle back out, `margin` outside its surface.
 void projectOutOfObstacles(std::span<const ObstacleDef> obstacles, ParticleStore& particles, float margin, int threads);

@@ -263,16 +263,41 @@ AddStatus World::addBlock(const BlockDef& block) {
     return AddStatus::Added;
 }
 
-void World::addObstacle(const ObstacleDef& obstacle) {
+void World::addObstacle(const ObstacleDef& def) {
     Impl& w = *impl_;
-    if (obstacle.shape == ObstacleDef::Shape::Sphere) {
-        for (int axis = 0; axis < 3; ++axis) requireFinite("obstacle.center", obstacle.center[axis]);
-        requirePositive("obstacle.radius", obstacle.radius);
-    } else {
-        validateBox("obstacle", obstacle.min, obstacle.max);
+    ObstacleDef obstacle = def;
+    const auto unit = [](const char* field, const glm::vec3& v) {
+        for (int axis = 0; axis < 3; ++axis) requireFinite(field, v[axis]);
+        if (!(glm::length(v) > 0.0f)) throw std::invalid_argument(std::string(field) + ": must be non-zero, got " + show(v));
+        return glm::normalize(v);
+    };
+    switch (obstacle.shape) {
+        case ObstacleDef::Shape::Box: validateBox("obstacle", obstacle.min, obstacle.max); break;
+        case ObstacleDef::Shape::Sphere:
+            for (int axis = 0; axis < 3; ++axis) requireFinite("obstacle.center", obstacle.center[axis]);
+            requirePositive("obstacle.radius", obstacle.radius);
+            break;
+        case ObstacleDef::Shape::Cylinder:
+            for (int axis = 0; axis < 3; ++axis) requireFinite("obstacle.center", obstacle.center[axis]);
+            obstacle.axis = unit("obstacle.axis", obstacle.axis);
+            requirePositive("obstacle.radius", obstacle.radius);
+            requirePositive("obstacle.length", obstacle.length);
+            break;
+        case ObstacleDef::Shape::Plane:
+            for (int axis = 0; axis < 3; ++axis) requireFinite("obstacle.point", obstacle.point[axis]);
+            obstacle.normal = unit("obstacle.normal", obstacle.normal);
+            break;
+        case ObstacleDef::Shape::Mesh:
+            if (!obstacle.mesh) throw std::invalid_argument("obstacle.mesh: a mesh obstacle needs a mesh, got none");
+            break;
+        default: throw std::invalid_argument("obstacle.shape: unknown shape");
     }
-    const auto points = sampleObstacle(obstacle, w.def.domainMin, w.def.particleSpacing, w.h);
-    w.boundary.add(points, 1.0f / w.latticeSum, w.h, w.threads);
+    // Sample up to the outside of the wall shell (a plane is infinite); boundary particles
+    // that coincide with earlier ones (the shell, an overlapping obstacle) are not repeated.
+    const float shell = std::ceil(w.h / w.def.particleSpacing) * w.def.particleSpacing;
+    const auto points = sampleObstacle(obstacle, w.def.domainMin, w.def.particleSpacing, w.h,
+                                       w.def.domainMin - shell, w.def.domainMax + shell, w.threads);
+    w.boundary.add(points, 1.0f / w.latticeSum, 0.5f * w.def.particleSpacing, w.h, w.threads);
     w.obstacles.push_back(obstacle);
 }
 

@@ -20,7 +20,7 @@ Scene loadScene(const std::filesystem::path& file) {
     std::ostringstream text;
     text << in.rdbuf();
     if (in.bad()) throw SceneError({file.string() + ": cannot read the scene file"});
-    return parseScene(text.str(), file.string());
+    return parseScene(text.str(), file.string(), file.parent_path());
 }
 
 std::uint64_t availableMemoryBytes() {

@@ -9,6 +9,7 @@
 #include <glm/vector_relational.hpp>
 #include <nlohmann/json.hpp>
 
+#include <tide/io/mesh.hpp>
 #include <tide/io/scene.hpp>
 
 namespace tide::io {
@@ -263,12 +264,137 @@ std::optional<MaterialIndex> readMaterialRef(Reader& r, const json& obj, const s
     return std::nullopt;
 }
 
+const std::vector<std::string> kObstacleTypes{"box", "sphere", "cylinder", "plane", "mesh"};
+
+/// A unit direction: "x", "y", "z" (optionally signed: "-y") or 3 numbers, not all zero.
+std::optional<glm::vec3> readDirection(Reader& r, const json& j, const char* key, const std::string& path) {
+    const std::string where = join(path, key);
+    if (!j.contains(key)) {
+        r.fail(where, "missing (required)");
+        return std::nullopt;
+    }
+    if (j.at(key).is_string()) {
+        std::string name = j.at(key).get<std::string>();
+        const float sign = !name.empty() && name[0] == '-' ? -1.0f : 1.0f;
+        if (!name.empty() && (name[0] == '-' || name[0] == '+')) name = name.substr(1);
+        if (name.size() == 1 && name[0] >= 'x' && name[0] <= 'z') {
+            glm::vec3 v(0.0f);
+            v[name[0] - 'x'] = sign;
+            return v;
+        }
+        r.fail(where, "must be \"x\", \"y\", \"z\" (or \"-x\" ...) or an array of 3 numbers, got " + show(j.at(key)));
+        return std::nullopt;
+    }
+    const auto v = r.vec3(j, key, path, true);
+    if (!v) return std::nullopt;
+    if (!(glm::length(*v) > 0.0f)) {
+        r.fail(where, "must not be [0, 0, 0]");
+        return std::nullopt;
+    }
+    return glm::normalize(*v);
+}
+
+/// A mesh's `scale`: a number or 3 numbers, all > 0 (default 1).
+std::optional<glm::vec3> readMeshScale(Reader& r, const json& j, const std::string& path) {
+    if (!j.contains("scale")) return glm::vec3(1.0f);
+    const json& v = j.at("scale");
+    const auto positive = [](const json& e) { return e.is_number() && e.get<double>() > 0.0 && e.get<double>() <= 1e6; };
+    if (positive(v)) return glm::vec3(static_cast<float>(v.get<double>()));
+    if (v.is_array() && v.size() == 3 && std::all_of(v.begin(), v.end(), positive))
+        return glm::vec3(static_cast<float>(v[0].get<double>()), static_cast<float>(v[1].get<double>()),
+                         static_cast<float>(v[2].get<double>()));
+    r.fail(join(path, "scale"), "must be a number or 3 numbers, all > 0, got " + show(v));
+    return std::nullopt;
+}
+
+/// One entry of "obstacles"; lengths scaled by `scale`, mesh files relative to `baseDirectory`.
+std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::string& path, float scale,
+                                        const std::filesystem::path& baseDirectory) {
+    if (!j.is_object()) {
+        r.fail(path, "must be an object, got " + show(j));
+        return std::nullopt;
+    }
+    const auto type = r.string(j, "type", path, true);
+    if (!type) return std::nullopt;
+    ObstacleDef o;
+    if (*type == "box") {
+        if (!r.object(j, path, {"type", "min", "max"})) return std::nullopt;
+        if (!readBox(r, j, path, scale, o.min, o.max)) return std::nullopt;
+        o.shape = ObstacleDef::Shape::Box;
+    } else if (*type == "sphere") {
+        if (!r.object(j, path, {"type", "center", "radius"})) return std::nullopt;
+        const auto c = r.vec3(j, "center", path, true);
+        const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
+        if (!c || !radius) return std::nullopt;
+        o.shape = ObstacleDef::Shape::Sphere;
+        o.center = *c * scale;
+        o.radius = static_cast<float>(*radius) * scale;
+    } else if (*type == "cylinder") {
+        if (!r.object(j, path, {"type", "center", "axis", "radius", "length"})) return std::nullopt;
+        const auto c = r.vec3(j, "center", path, true);
+        const auto axis = readDirection(r, j, "axis", path);
+        const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
+        const auto length = r.number(j, "length", path, true, 0.0, 1e6, true);
+        if (!c || !axis || !radius || !length) return std::nullopt;
+        o.shape = ObstacleDef::Shape::Cylinder;
+        o.center = *c * scale;
+        o.axis = *axis;
+        o.radius = static_cast<float>(*radius) * scale;
+        o.length = static_cast<float>(*length) * scale;
+    } else if (*type == "plane") {
+        if (!r.object(j, path, {"type", "point", "normal"})) return std::nullopt;
+        const auto point = r.vec3(j, "point", path, true);
+        const auto normal = readDirection(r, j, "normal", path);
+        if (!point || !normal) return std::nullopt;
+        o.shape = ObstacleDef::Shape::Plane;
+        o.point = *point * scale;
+        o.normal = *normal;
+    } else if (*type == "mesh") {
+        if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate"})) return std::nullopt;
+        const auto file = r.string(j, "file", path, true);
+        MeshPlacement placement;
+        const auto meshScale = readMeshScale(r, j, path);
+        bool ok = meshScale.has_value();
+        if (meshScale) placement.scale = *meshScale;
+        if (j.contains("rotate")) {
+            if (auto v = r.vec3(j, "rotate", path, false)) placement.rotateDegrees = *v;
+            else ok = false;
+        }
+        if (j.contains("translate")) {
+            if (auto v = r.vec3(j, "translate", path, false)) placement.translate = *v;
+            else ok = false;
+        }
+        if (!file || !ok) return std::nullopt;
+        if (file->empty()) {
+            r.fail(join(path, "file"), "must name a mesh file (.obj or .ply), got \"\"");
+            return std::nullopt;
+        }
+        // unit_scale converts the placed mesh to metres.
+        placement.scale *= scale;
+        placement.translate *= scale;
+        const std::filesystem::path resolved = baseDirectory / *file;
+        try {
+            o.mesh = loadMesh(resolved, placement);
+        } catch (const MeshError& e) {
+            const std::string shown = resolved.string() == *file ? *file : *file + " (" + resolved.string() + ")";
+            r.fail(join(path, "file"), shown + ": " + e.problem);
+            return std::nullopt;
+        }
+        o.shape = ObstacleDef::Shape::Mesh;
+    } else {
+        r.fail(join(path, "type"), "must be \"box\", \"sphere\", \"cylinder\", \"plane\" or \"mesh\", got \"" + *type +
+                                       "\"" + suggestion(*type, kObstacleTypes));
+        return std::nullopt;
+    }
+    return o;
+}
+
 }  // namespace
 
 SceneError::SceneError(std::vector<std::string> list)
     : std::runtime_error(list.empty() ? "bad scene" : list.front()), problems(std::move(list)) {}
 
-Scene parseScene(std::string_view text, const std::string& source) {
+Scene parseScene(std::string_view text, const std::string& source, const std::filesystem::path& baseDirectory) {
     json root;
     try {
         root = json::parse(text.begin(), text.end());
@@ -327,34 +453,9 @@ Scene parseScene(std::string_view text, const std::string& source) {
         r.fail("materials", "must list at least one material");
 
     const json& obstacles = r.array(root, "obstacles", "", false);
-    for (std::size_t i = 0; i < obstacles.size(); ++i) {
-        const std::string path = indexed("obstacles", i);
-        if (!obstacles[i].is_object()) {
-            r.fail(path, "must be an object, got " + show(obstacles[i]));
-            continue;
-        }
-        auto type = r.string(obstacles[i], "type", path, true);
-        ObstacleDef o;
-        if (!type) continue;
-        if (*type == "box") {
-            if (!r.object(obstacles[i], path, {"type", "min", "max"})) continue;
-            if (!readBox(r, obstacles[i], path, scale, o.min, o.max)) continue;
-            o.shape = ObstacleDef::Shape::Box;
-        } else if (*type == "sphere") {
-            if (!r.object(obstacles[i], path, {"type", "center", "radius"})) continue;
-            const auto c = r.vec3(obstacles[i], "center", path, true);
-            const auto radius = r.number(obstacles[i], "radius", path, true, 0.0, 1e6, true);
-            if (!c || !radius) continue;
-            o.shape = ObstacleDef::Shape::Sphere;
-            o.center = *c * scale;
-            o.radius = static_cast<float>(*radius) * scale;
-        } else {
-            r.fail(join(path, "type"), "must be \"box\" or \"sphere\", got \"" + *type + "\"" +
-                                           suggestion(*type, {"box", "sphere"}));
-            continue;
-        }
-        scene.obstacles.push_back(o);
-    }
+    for (std::size_t i = 0; i < obstacles.size(); ++i)
+        if (auto o = readObstacle(r, obstacles[i], indexed("obstacles", i), scale, baseDirectory))
+            scene.obstacles.push_back(std::move(*o));
 
     const json& blocks = r.array(root, "blocks", "", false);
     for (std::size_t i = 0; i < blocks.size(); ++i) {

@@ -42,9 +42,11 @@ public:
     std::vector<std::string> problems;
 };
 
-/// Parse scene text; `source` names it in messages. Throws SceneError.
-Scene parseScene(std::string_view json, const std::string& source);
-/// Read and parse a scene file. Throws SceneError (also for an unreadable file).
+/// Parse scene text; `source` names it in messages, and files it names (mesh obstacles)
+/// are relative to `baseDirectory` (default: the current directory). Throws SceneError.
+Scene parseScene(std::string_view json, const std::string& source, const std::filesystem::path& baseDirectory = {});
+/// Read and parse a scene file; files it names are relative to its folder. Throws SceneError
+/// (also for an unreadable file).
 Scene loadScene(const std::filesystem::path& file);
 
 /// How big a scene gets.
