@@ -18,6 +18,10 @@ constexpr std::uint32_t kMinNeighborsForDivergence = 20;
 /// Jacobi weight of the density solve. Its pressure may fall as well as rise, and full
 /// Jacobi steps on this system overshoot and diverge; IISPH (Ihmsen et al. 2014) uses 0.5.
 constexpr float kRelaxation = 0.5f;
+/// The density solve stops at this fraction of SolverDef::maxDensityError: what it checks is
+/// the density predicted over this step's neighbour lists; the density reached also counts
+/// pairs that come into range during the step (measured: up to 2 % more in a dam break).
+constexpr double kDensityTarget = 0.9;
 
 /// Σ_j m_j (v_i − v_j)·∇W_ij + Σ_b Ψ_b v_i·∇W_ib: the rate of change of ρ_i (boundaries at rest).
 float densityRate(const StepContext& ctx, const kernels::CubicSpline& w, std::uint32_t i) {
@@ -35,6 +39,21 @@ float densityRate(const StepContext& ctx, const kernels::CubicSpline& w, std::ui
         rate += rho0 * ctx.boundary.volume[b] * glm::dot(vi, w.gradient(rib, glm::length(rib)));
     }
     return rate;
+}
+/// ρ*_i: the density at the positions the current velocities reach after dt, over this step's
+/// neighbours. The paper linearises it, ρ_i + Δt Dρ_i/Dt (eq. 9); the kernel is convex where
+/// neighbours close in, so the linear guess misses up to 90 % of the tolerance at CFL 0.4 in a
+/// dam break (measured), and evaluating W at the new positions costs no more than ∇W·v.
+float predictedDensity(const StepContext& ctx, const kernels::CubicSpline& w, std::uint32_t i, float dt) {
+    const ParticleStore& p = ctx.particles;
+    const glm::vec3 xi = p.position[i] + dt * p.velocity[i];
+    float rho = p.mass[i] * w.value(0.0f);
+    for (const std::uint32_t j : ctx.neighbors.of(i))
+        rho += p.mass[j] * w.value(glm::length(xi - p.position[j] - dt * p.velocity[j]));
+    float volume = 0.0f;
+    for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
+        volume += ctx.boundary.volume[b] * w.value(glm::length(xi - ctx.boundary.position[b]));
+    return rho + ctx.materials[p.material[i]].restDensity * volume;
 }
 }  // namespace
 
@@ -153,11 +172,12 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const float rho0 = ctx.materials[p.material[i]].restDensity;
-            residual_[i] = p.density[i] + dt * densityRate(ctx, w, i) - rho0;  // ρ* − ρ0
+            residual_[i] = predictedDensity(ctx, w, i, dt) - rho0;  // ρ* − ρ0
             // Error left: compression anywhere, expansion only where pressure could still relax.
             source_[i] = kappa[i] > 0.0f ? std::abs(residual_[i]) : std::max(residual_[i], 0.0f);
         });
-        if (iteration >= ctx.solver.minIterations && meanRelativeSource(ctx) <= ctx.solver.maxDensityError) break;
+        if (iteration >= ctx.solver.minIterations && meanRelativeSource(ctx) <= kDensityTarget * ctx.solver.maxDensityError)
+            break;
         // Projected Jacobi: κ stays ≥ 0 (no tension at the free surface) but may fall back
         // where the warm start pushed too hard.
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -188,8 +208,9 @@ double DfsphBender2017::step(StepContext& ctx) {
         p.acceleration[i] = accel_[i];
         p.velocity[i] += dtf * accel_[i];
     });
-    const int densityIterations = solveDensity(ctx, dtf);
+    // XSPH is a non-pressure force too: smoothing after the density solve would undo part of it.
     xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+    const int densityIterations = solveDensity(ctx, dtf);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         p.position[i] += dtf * p.velocity[i];
         p.pressure[i] = p.density[i] * (kappa_[i] + pressureSum_[i]);  // p = ρκ: the equivalent SPH pressure
