@@ -40,6 +40,7 @@ void expectInsideDomain(const World& world) {
 TEST(ClassicSolver, StillWaterSettles) {
     for (const auto eos : {EquationOfState::Linear, EquationOfState::Tait}) {
         WorldDef def;
+        def.solver.method = "classic";
         def.domainMax = {0.2f, 0.4f, 0.2f};
         def.particleSpacing = 0.02f;
         def.solver.equationOfState = eos;
@@ -68,6 +69,7 @@ TEST(ClassicSolver, StillWaterSettles) {
 
 TEST(ClassicSolver, CollidingBlocksConserveMomentum) {
     WorldDef def;
+    def.solver.method = "classic";
     def.walls = false;
     def.gravity = {0, 0, 0};
     def.particleSpacing = 0.02f;
@@ -90,6 +92,7 @@ TEST(ClassicSolver, CollidingBlocksConserveMomentum) {
 TEST(ClassicSolver, LightFluidFloatsOnWater) {
     // Seed demo 3: light water (200 kg/m³) in one slab, water in two slabs beside it.
     WorldDef def;
+    def.solver.method = "classic";
     def.domainMax = {0.4f, 0.4f, 0.2f};
     def.particleSpacing = 0.02f;
     World world(def);

@@ -53,7 +53,14 @@ struct FluidSettings {
     /// 0.001; at the seed's resolution the explicit solver needs more to stay smooth.
     float waterViscosity = 0.5f;
     int threads = 0;                         ///< 0 = all cores
-    SolverDef solver;                        ///< method, equation of state, time step limits
+    SolverDef solver = seedSolver();         ///< method (the seed's "classic"), equation of state, time step limits
+
+    /// The seed's solver: Müller et al. 2003 ("classic").
+    static SolverDef seedSolver() {
+        SolverDef s;
+        s.method = "classic";
+        return s;
+    }
 };
 
 class Fluid {

@@ -130,7 +130,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             break;
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             k_[i] = source_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
-            pressureSum_[i] += k_[i] / static_cast<float>(lastDt_);
+            divergenceK_[i] += k_[i];
         });
         applyPressure(ctx, {});
     }
@@ -195,13 +195,15 @@ double DfsphBender2017::step(StepContext& ctx) {
     const auto n = p.size();
     sph::computeDensities(ctx);
     computeAlpha(ctx);
-    pressureSum_.assign(n, 0.0f);
+    divergenceK_.assign(n, 0.0f);
     const int divergenceIterations = solveDivergence(ctx);
 
     sph::addGravityAndViscosity(ctx, accel_);
     const float nu = sph::maxKinematicViscosity(ctx);
     SolverDef limits = ctx.solver;
-    if (nu > 0.0f) limits.maxDt = std::min(limits.maxDt, 0.125f * ctx.particleSpacing * ctx.particleSpacing / nu);
+    // Explicit viscosity's limit, but never below the user's floor min_dt.
+    if (nu > 0.0f)
+        limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, 0.125f * ctx.particleSpacing * ctx.particleSpacing / nu));
     const double dt = cflTimeStep(limits, ctx.particleSpacing, sph::maxSpeed(ctx), ctx.maxDt);
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -213,7 +215,8 @@ double DfsphBender2017::step(StepContext& ctx) {
     const int densityIterations = solveDensity(ctx, dtf);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         p.position[i] += dtf * p.velocity[i];
-        p.pressure[i] = p.density[i] * (kappa_[i] + pressureSum_[i]);  // p = ρκ: the equivalent SPH pressure
+        // The divergence solve's velocity change acts over this step.
+        p.pressure[i] = p.density[i] * (kappa_[i] + divergenceK_[i] / dtf);  // p = ρκ: the equivalent SPH pressure
     });
     ctx.pressureIterations = divergenceIterations + densityIterations;
     lastDt_ = dt;

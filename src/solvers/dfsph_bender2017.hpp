@@ -47,7 +47,7 @@ private:
     std::vector<float> source_;        ///< error left: Dρ/Dt (divergence) or |ρ* − ρ0| (density)
     std::vector<float> residual_;      ///< ρ* − ρ0 of the density solve, signed
     std::vector<float> k_;             ///< κ·Δt (divergence) or κ·Δt² (density) of one iteration
-    std::vector<float> pressureSum_;   ///< κᵛ summed over the divergence iterations, for the pressure output
+    std::vector<float> divergenceK_;   ///< κᵛ·Δt summed over the divergence iterations, for the pressure output
     std::vector<float> kappa_;         ///< κ of the density solve so far, m²/s²
     std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
     std::vector<float> boundaryKappa_; ///< κ_b applied so far this step

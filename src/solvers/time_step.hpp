@@ -15,7 +15,9 @@ namespace tide {
 /// incompressible solver removes the density error it finds within the step, so a tiny step
 /// means huge velocities. Two steps of half the remaining time land instead.
 inline double landOn(double stable, double remaining) {
-    if (remaining <= stable) return remaining;
+    // Round-off slack: a float max_dt of 5e-3 is 0.00499999989, and a 0.025 s frame must
+    // still be five steps, not four and two halves.
+    if (remaining <= stable * (1.0 + 1e-6)) return remaining;
     if (remaining < 2.0 * stable) return 0.5 * remaining;
     return stable;
 }
