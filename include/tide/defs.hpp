@@ -30,7 +30,7 @@ enum class EquationOfState {
 
 /// How the pressure/viscosity solver runs and how its time step is chosen.
 struct SolverDef {
-    std::string method = "classic";         ///< solver name, see tide::solverNames(): classic, wcsph, dfsph
+    std::string method = "classic";         ///< solver name, see tide::solverNames(): classic, wcsph, pcisph, dfsph
     EquationOfState equationOfState = EquationOfState::Linear;
     /// Numerical speed of sound, m/s (classic, wcsph). 0 picks 10 × the free-fall speed
     /// over the domain height, which keeps density variations near 1 %.
