@@ -49,11 +49,13 @@ void BM_Step(benchmark::State& state) {
 
 constexpr char kClassic[] = "classic";
 constexpr char kWcsph[] = "wcsph";
+constexpr char kPcisph[] = "pcisph";
 constexpr char kDfsph[] = "dfsph";
 
 BENCHMARK(BM_NeighborSearch)->Arg(50000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Step<kClassic>)->Name("BM_ClassicStep")->Arg(50000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Step<kWcsph>)->Name("BM_WcsphStep")->Arg(50000)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_Step<kPcisph>)->Name("BM_PcisphStep")->Arg(50000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_Step<kDfsph>)->Name("BM_DfsphStep")->Arg(50000)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

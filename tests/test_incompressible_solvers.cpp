@@ -1,4 +1,4 @@
-// The cubic-spline solvers (wcsph, dfsph) against hydrostatics and each other.
+// The cubic-spline solvers (wcsph, pcisph, dfsph) against hydrostatics and each other.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -24,17 +24,17 @@ struct Hydrostatics {
     double meanDt = 0.0;
 };
 
-/// A tank 0.3 m deep (spacing 0.02 m) settles for 1.5 s; pressure is then averaged over
+/// A tank 0.3 m deep and 0.24 m square (spacing 0.02 m) settles for 1.5 s; pressure is then averaged over
 /// 0.5 s in depth bins one spacing thick, away from the side walls.
 Hydrostatics hydrostaticTank(const std::string& solver) {
     const float depth = 0.3f, s = 0.02f;
     WorldDef def;
-    def.domainMax = {0.3f, 0.5f, 0.3f};
+    def.domainMax = {0.24f, 0.5f, 0.24f};
     def.particleSpacing = s;
     def.solver.method = solver;
     World world(def);
     world.addMaterial(MaterialDef{});
-    world.addBlock({{0, 0, 0}, {0.3f, depth, 0.3f}, {0, 0, 0}, 0});
+    world.addBlock({{0, 0, 0}, {0.24f, depth, 0.24f}, {0, 0, 0}, 0});
     Hydrostatics out;
     world.advance(0.1);
     world.advance(1.4, [&] { out.maxCompression = std::max<double>(out.maxCompression, world.stats().meanCompression); });
@@ -47,7 +47,7 @@ Hydrostatics hydrostaticTank(const std::string& solver) {
         const ParticleStore& p = world.particles();
         for (std::uint32_t i = 0; i < p.size(); ++i) {
             const glm::vec3 x = p.position[i];
-            if (x.x < 0.06f || x.x > 0.24f || x.z < 0.06f || x.z > 0.24f) continue;
+            if (x.x < 0.06f || x.x > 0.18f || x.z < 0.06f || x.z > 0.18f) continue;
             const int bin = static_cast<int>(std::floor((depth - x.y - 0.04) / s));
             if (bin < 0 || bin >= bins) continue;
             sum[bin] += p.pressure[i] / (1000.0 * 9.81 * (depth - x.y));
@@ -70,7 +70,7 @@ Hydrostatics hydrostaticTank(const std::string& solver) {
     return out;
 }
 
-// Issue 4 asks for a max speed < 0.02 m/s at rest; measured ~0.07 (dfsph) and ~0.04
+// Issue 4 asks for a max speed < 0.02 m/s at rest; measured ~0.07 (dfsph, pcisph) and ~0.04
 // (wcsph), from free-surface particles creeping along the walls, so that bound is looser.
 TEST(DfsphSolver, HydrostaticTankMatchesRhoGD) {
     const Hydrostatics h = hydrostaticTank("dfsph");
@@ -87,26 +87,83 @@ TEST(WcsphSolver, HydrostaticTankMatchesRhoGD) {
     EXPECT_LT(h.maxSpeed, 0.1f);
 }
 
-TEST(DfsphSolver, TakesFiveTimesLongerStepsThanWcsphOnADamBreak) {
-    auto meanDt = [](const std::string& solver, double* maxCompression) {
-        WorldDef def;
-        def.domainMax = {0.8f, 0.4f, 0.2f};
-        def.particleSpacing = 0.02f;
-        def.solver.method = solver;
-        World world(def);
-        world.addMaterial(MaterialDef{});
-        world.addBlock({{0, 0, 0}, {0.2f, 0.3f, 0.2f}, {0, 0, 0}, 0});
-        world.advance(0.4, [&] { *maxCompression = std::max<double>(*maxCompression, world.stats().meanCompression); });
-        EXPECT_EQ(world.countEscapedParticles(), 0u) << solver;
-        return world.stats().dtSum / static_cast<double>(world.stats().steps);
-    };
-    double dfsphCompression = 0.0, wcsphCompression = 0.0;
-    const double dfsph = meanDt("dfsph", &dfsphCompression);
-    const double wcsph = meanDt("wcsph", &wcsphCompression);
-    std::printf("mean dt: dfsph %.2e s, wcsph %.2e s; max mean compression dfsph %.5f, wcsph %.5f\n", dfsph, wcsph,
-                dfsphCompression, wcsphCompression);
-    EXPECT_GT(dfsph, 5.0 * wcsph);
-    EXPECT_LE(dfsphCompression, SolverDef{}.maxDensityError);  // measured after every step
+struct DamBreak {
+    double meanDt = 0.0;
+    double maxCompression = 0.0;  ///< largest per-step mean compression
+    double iterationsPerStep = 0.0;
+};
+
+/// A 0.2 m × 0.3 m column released in a 0.8 m tank, 0.4 s.
+DamBreak damBreak(const std::string& solver) {
+    WorldDef def;
+    def.domainMax = {0.8f, 0.4f, 0.2f};
+    def.particleSpacing = 0.02f;
+    def.solver.method = solver;
+    World world(def);
+    world.addMaterial(MaterialDef{});
+    world.addBlock({{0, 0, 0}, {0.2f, 0.3f, 0.2f}, {0, 0, 0}, 0});
+    DamBreak out;
+    world.advance(0.4, [&] { out.maxCompression = std::max<double>(out.maxCompression, world.stats().meanCompression); });
+    EXPECT_EQ(world.countEscapedParticles(), 0u) << solver;
+    const auto steps = static_cast<double>(world.stats().steps);
+    out.meanDt = world.stats().dtSum / steps;
+    out.iterationsPerStep = static_cast<double>(world.stats().pressureIterationsSum) / steps;
+    std::printf("%s dam break: mean dt %.2e s, max mean compression %.5f, %.1f pressure iterations per step\n",
+                solver.c_str(), out.meanDt, out.maxCompression, out.iterationsPerStep);
+    return out;
+}
+
+// Issue 4: the incompressible solvers take steps at least 5× longer than wcsph on the same
+// dam break, and their density error (measured after every step, not the solver's own
+// prediction) stays under the tolerance.
+TEST(IncompressibleSolvers, DamBreakStepsFiveTimesLongerThanWcsphWithinTolerance) {
+    const DamBreak wcsph = damBreak("wcsph");
+    for (const char* solver : {"dfsph", "pcisph"}) {
+        const DamBreak incompressible = damBreak(solver);
+        EXPECT_GT(incompressible.meanDt, 5.0 * wcsph.meanDt) << solver;
+        EXPECT_LE(incompressible.maxCompression, SolverDef{}.maxDensityError) << solver;
+        EXPECT_GE(incompressible.iterationsPerStep, SolverDef{}.minIterations) << solver;
+    }
+}
+
+TEST(PcisphSolver, HydrostaticTankMatchesRhoGD) {
+    const Hydrostatics h = hydrostaticTank("pcisph");
+    EXPECT_LT(h.pressureRms, 0.05);
+    EXPECT_LT(h.meanDensityError, 0.002);
+    EXPECT_LT(h.maxSpeed, 0.1f);
+    EXPECT_GT(h.meanDt, 2e-3);  // the CFL step of a fluid at rest: max_dt
+}
+
+// bench_core's dam break, 27 layers tall: the first steps' compression sits in the bottom
+// layer, which the mean hides, so the column falls nearly freely onto the floor. At 5 ms
+// steps the squeezed bottom layer made the solve diverge within 8 steps (speeds of 200 m/s)
+// until failed solves were retaken at half the length.
+TEST(PcisphSolver, ColumnFallingOntoTheFloorStaysBounded) {
+    World world = scenarios::damBreak(0.4f / std::cbrt(20000.0f), 0, 1.6f, 0.4f, 0.4f, WorldDef{}.reorderInterval, "pcisph");
+    float maxSpeed = 0.0f;
+    world.advance(0.1, [&] { maxSpeed = std::max(maxSpeed, world.stats().maxSpeed); });
+    const float fallSpeed = std::sqrt(2.0f * 9.81f * 0.4f);
+    std::printf("pcisph falling column: max speed %.2f m/s (free fall over the column %.2f m/s), %llu steps, shortest %.2e s\n",
+                maxSpeed, fallSpeed, static_cast<unsigned long long>(world.stats().steps), world.stats().dtMin);
+    EXPECT_LT(maxSpeed, 1.5f * fallSpeed);
+    EXPECT_EQ(world.countEscapedParticles(), 0u);
+}
+
+// A block released at rest sags into its compressed state, and the impact of that first
+// sag rings for seconds: ~10 % of the free-fall speed after 1 s, halving each second (dfsph
+// rings the same way). Asserted: the ringing dies down and nothing leaks or collapses.
+TEST(PcisphSolver, StillWaterDoesNotDrift) {
+    World world = scenarios::stillWater(0.2f, 0.2f, 0.02f, 0, "pcisph");
+    world.advance(1.0);
+    const float afterOne = world.stats().maxSpeed;
+    world.advance(1.0);
+    const float afterTwo = world.stats().maxSpeed;
+    const float fallSpeed = std::sqrt(2.0f * 9.81f * 0.2f);  // what a leak or a collapse would reach
+    std::printf("pcisph still water: max speed %.4f m/s after 1 s, %.4f m/s after 2 s (free fall over the depth %.2f m/s)\n",
+                afterOne, afterTwo, fallSpeed);
+    EXPECT_LT(afterOne, 0.15f * fallSpeed);
+    EXPECT_LT(afterTwo, 0.75f * afterOne);
+    EXPECT_EQ(world.countEscapedParticles(), 0u);
 }
 
 }  // namespace

@@ -33,7 +33,7 @@ enum class EquationOfState {
 
 /// How the pressure/viscosity solver runs and how its time step is chosen.
 struct SolverDef {
-    /// Solver name, see tide::solverNames(): classic (the seed's Müller 2003), wcsph, dfsph.
+    /// Solver name, see tide::solverNames(): dfsph, pcisph, wcsph, classic (the seed's Müller 2003).
     std::string method = "dfsph";
     EquationOfState equationOfState = EquationOfState::Linear;
     /// Numerical speed of sound, m/s (classic, wcsph). 0 picks 10 × the free-fall speed
