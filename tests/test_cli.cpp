@@ -131,6 +131,9 @@ std::vector<BrokenScene> brokenScenes() {
         {"plane with zero normal", smallScene(R"(, "obstacles": [{"type": "plane", "point": [0, 0.05, 0], "normal": [0, 0, 0]}])"), "obstacles[0].normal"},
         {"mesh file missing", smallScene(R"(, "obstacles": [{"type": "mesh", "file": "models/no_such_rock.obj"}])"), "obstacles[0].file: models/no_such_rock.obj"},
         {"unit scale zero", smallScene(R"(, "unit_scale": 0)"), "unit_scale"},
+        {"periodic not booleans", replace(ok, "\"max\": [0.2, 0.2, 0.2]}", "\"max\": [0.2, 0.2, 0.2], \"periodic\": [1, 0, 0]}"), "domain.periodic"},
+        {"periodic axis too short", replace(replace(ok, "\"max\": [0.2, 0.2, 0.2]}", "\"max\": [0.2, 0.2, 0.2], \"periodic\": [true, false, false]}"),
+                                            "\"particle_spacing\": 0.02", "\"particle_spacing\": 0.06"), "domain.periodic"},
     };
 }
 

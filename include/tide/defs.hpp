@@ -60,6 +60,10 @@ struct WorldDef {
     glm::vec3 domainMin{0.0f, 0.0f, 0.0f};  ///< container corner, m
     glm::vec3 domainMax{1.0f, 1.0f, 1.0f};  ///< container corner, m
     bool walls = true;                      ///< keep particles inside the domain box
+    /// Periodic axes: no walls across them, a particle leaving through max re-enters at min,
+    /// and particles interact across the seam (nearest image). A periodic axis must be at
+    /// least 2 kernel supports long; make it a whole number of spacings so blocks tile it.
+    glm::bvec3 periodic{false, false, false};
     float wallRestitution = 0.0f;           ///< fraction of normal speed kept when hitting a wall
     glm::vec3 gravity{0.0f, -9.81f, 0.0f};  ///< m/s²
     float particleSpacing = 0.02f;          ///< initial distance between particles, m

@@ -431,7 +431,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     bool domainOk = false;
     if (!root.contains("domain")) {
         r.fail("domain", "missing (required)");
-    } else if (r.object(root["domain"], "domain", {"min", "max"})) {
+    } else if (r.object(root["domain"], "domain", {"min", "max", "periodic"})) {
         glm::vec3 lo, hi;
         if (readBox(r, root["domain"], "domain", scale, lo, hi)) {
             if (glm::any(glm::equal(lo, hi))) {
@@ -442,11 +442,33 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
                 domainOk = true;
             }
         }
+        if (root["domain"].contains("periodic")) {
+            const json& v = root["domain"]["periodic"];
+            const auto isBool = [](const json& e) { return e.is_boolean(); };
+            if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), isBool))
+                r.fail("domain.periodic", "must be an array of 3 booleans (x, y, z), got " + show(v));
+            else
+                for (int a = 0; a < 3; ++a) w.periodic[a] = v[static_cast<std::size_t>(a)].get<bool>();
+        }
     }
     if (auto g = r.vec3(root, "gravity", "", false)) w.gravity = *g * scale;
     if (auto v = r.number(root, "particle_spacing", "", true, 0.0, 1e6, true)) w.particleSpacing = static_cast<float>(*v) * scale;
     if (auto v = r.number(root, "end_time", "", true, 0.0, 1e7, true)) scene.endTime = *v;
     if (root.contains("solver")) readSolver(r, root["solver"], scene);
+
+    if (domainOk) {
+        const float support = w.particleSpacing * w.supportRatio;
+        for (int a = 0; a < 3; ++a) {
+            const float extent = w.domainMax[a] - w.domainMin[a];
+            if (w.periodic[a] && !(extent >= 2.0f * support)) {
+                std::ostringstream msg;
+                msg << "the periodic " << "xyz"[a] << " axis is " << extent / scale
+                    << " long, less than 2 kernel supports (2 × " << support / scale
+                    << "); lengthen it or make particle_spacing smaller";
+                r.fail("domain.periodic", msg.str());
+            }
+        }
+    }
 
     readMaterials(r, r.array(root, "materials", "", true), scene);
     if (root.contains("materials") && root["materials"].is_array() && root["materials"].empty())

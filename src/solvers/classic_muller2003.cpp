@@ -17,12 +17,12 @@ void ClassicMuller2003::computeDensityAndPressure(StepContext& ctx) const {
         const glm::vec3 xi = p.position[i];
         float rho = p.mass[i] * selfWeight;
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 d = xi - p.position[j];
+            const glm::vec3 d = ctx.delta(xi, p.position[j]);
             rho += p.mass[j] * poly6.valueSq(glm::dot(d, d));
         }
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 d = xi - ctx.boundary.position[b];
+            const glm::vec3 d = ctx.delta(xi, ctx.boundary.position[b]);
             boundaryVolume += ctx.boundary.volume[b] * poly6.valueSq(glm::dot(d, d));
         }
         const MaterialDef& mat = ctx.materials[p.material[i]];
@@ -45,7 +45,7 @@ void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
         glm::vec3 pressureSum(0.0f);
         glm::vec3 viscousSum(0.0f);
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = xi - p.position[j];
+            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
             const float r = glm::length(rij);
             const float massOverRho = p.mass[j] / p.density[j];
             // −∇W_spiky = 45/(πh⁶)(h − r)² r̂: positive pressure pushes i away from j.
@@ -54,7 +54,7 @@ void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
             viscousSum += (massOverRho * muij * viscosity.laplacian(r)) * (p.velocity[j] - vi);
         }
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             const float r = glm::length(rib);
             if (r > 0.0f) pressureSum += (ctx.boundary.volume[b] * pi * -spiky.gradientScale(r) / r) * rib;
         }
@@ -81,7 +81,8 @@ double ClassicMuller2003::step(StepContext& ctx) {
 
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
-    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.25f, ctx.threads);
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
+                ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.25f, ctx.threads);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     return dt;
 }

@@ -28,10 +28,11 @@ inline void computeDensities(StepContext& ctx) {
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         float rho = p.mass[i] * self;
-        for (const std::uint32_t j : ctx.neighbors.of(i)) rho += p.mass[j] * w.value(glm::length(xi - p.position[j]));
+        for (const std::uint32_t j : ctx.neighbors.of(i))
+            rho += p.mass[j] * w.value(glm::length(ctx.delta(xi, p.position[j])));
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(xi - ctx.boundary.position[b]));
+            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
         p.density[i] = rho + ctx.materials[p.material[i]].restDensity * boundaryVolume;
     });
 }
@@ -51,7 +52,7 @@ inline void addGravityAndViscosity(StepContext& ctx, std::vector<glm::vec3>& acc
         const float mui = ctx.materials[p.material[i]].viscosity;
         glm::vec3 sum(0.0f);
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = xi - p.position[j];
+            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
             const float r = glm::length(rij);
             const float nu = (mui + ctx.materials[p.material[j]].viscosity) / (p.density[i] + p.density[j]);
             const float vr = glm::dot(vi - p.velocity[j], rij);
