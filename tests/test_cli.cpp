@@ -134,6 +134,7 @@ std::vector<BrokenScene> brokenScenes() {
         {"periodic not booleans", replace(ok, "\"max\": [0.2, 0.2, 0.2]}", "\"max\": [0.2, 0.2, 0.2], \"periodic\": [1, 0, 0]}"), "domain.periodic"},
         {"periodic axis too short", replace(replace(ok, "\"max\": [0.2, 0.2, 0.2]}", "\"max\": [0.2, 0.2, 0.2], \"periodic\": [true, false, false]}"),
                                             "\"particle_spacing\": 0.02", "\"particle_spacing\": 0.06"), "domain.periodic"},
+        {"unknown viscosity model", smallScene(R"(, "solver": {"viscosity": "moris"})"), "solver.viscosity: unknown viscosity model \"moris\" (did you mean \"morris\"?)"},
     };
 }
 

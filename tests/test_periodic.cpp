@@ -184,6 +184,7 @@ TEST(PeriodicWorld, FlowCrossesTheSeamsAndConservesParticles) {
     for (const std::string solver : {"classic", "wcsph", "dfsph"}) {
         WorldDef def = channel(solver);
         def.gravity = {0, 0, 0};
+        def.solver.viscosity = "xsph";  // no wall friction: the whole fluid keeps its speed
         World world(def);
         world.addMaterial({});
         const glm::vec3 v0(0.5f, 0.0f, 0.2f);

@@ -41,7 +41,13 @@ struct SolverDef {
     /// Negative pressures (tension) pull free-surface particles into clumps; clamp them
     /// to zero by default, as most SPH codes do.
     bool clampNegativePressure = true;
-    /// XSPH velocity smoothing ε (Monaghan 1989), in [0, 1]: damps particle-scale noise.
+    /// Viscosity model by name, see tide::viscosityNames(): `morris` (Morris et al. 1997),
+    /// `monaghan` (Monaghan 2005), `muller` (Müller et al. 2003), all physical (driven by
+    /// the materials' Pa·s, no-slip walls), or `xsph` (no physical viscosity: XSPH smoothing
+    /// alone). Empty: the solver's own (classic: muller, the others: morris).
+    std::string viscosity;
+    /// XSPH velocity smoothing ε (Monaghan 1989), in [0, 1]: an artificial viscosity that
+    /// damps particle-scale noise, applied on top of any model; 0 switches it off.
     /// Negative: the solver's own default (classic 0.25, the others 0.01).
     float xsph = -1.0f;
     /// Incompressible solvers (dfsph, pcisph) iterate until the mean compression

@@ -41,6 +41,9 @@ struct WorldStats {
 /// Names of the solvers World accepts in SolverDef::method.
 std::vector<std::string> solverNames();
 
+/// Names of the viscosity models World accepts in SolverDef::viscosity.
+std::vector<std::string> viscosityNames();
+
 /// One simulation. Not copyable; move it or hold it by pointer.
 ///
 /// Creation validates the WorldDef and throws std::invalid_argument naming the field

@@ -94,6 +94,7 @@ struct World::Impl {
     std::unique_ptr<Solver> solver;
     float latticeSum;
     PeriodicBox periodic;
+    ViscosityModel viscosity;
     std::vector<MaterialDef> materials;
     ParticleStore particles;
     UniformGrid grid;
@@ -113,6 +114,7 @@ struct World::Impl {
           solver(makeSolver(d.solver.method)),
           latticeSum(latticeKernelSum(solver->densityKernel(), d.particleSpacing, h)),
           periodic(PeriodicBox::make(d.domainMin, d.domainMax, d.periodic)),
+          viscosity(viscosityModel(d.solver.viscosity, solver->defaultViscosity())),
           soundSpeed(d.solver.soundSpeed) {
         boundary.periodic = periodic;
         if (def.walls) {
@@ -368,7 +370,7 @@ double World::step(double maxDt) {
     w.rebuildNeighbors();
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
                     w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.boundaryFluidNeighbors,
-                    w.periodic, w.threads, maxDt};
+                    w.periodic, w.viscosity, w.threads, maxDt};
     const double dt = w.solver->step(ctx);
     w.stats.lastPressureIterations = ctx.pressureIterations;
     w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);

@@ -194,8 +194,8 @@ bool readBox(Reader& r, const json& j, const std::string& path, float scale, glm
 
 void readSolver(Reader& r, const json& j, Scene& scene) {
     const std::string path = "solver";
-    if (!r.object(j, path, {"method", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "xsph",
-                            "clamp_negative_pressure", "support_ratio", "max_density_error", "min_iterations",
+    if (!r.object(j, path, {"method", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "viscosity",
+                            "xsph", "clamp_negative_pressure", "support_ratio", "max_density_error", "min_iterations",
                             "max_iterations"}))
         return;
     SolverDef& s = scene.world.solver;
@@ -220,6 +220,17 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     if (auto v = r.number(j, "min_dt", path, false, 0.0, 1.0, true)) s.minDt = static_cast<float>(*v);
     if (auto v = r.number(j, "max_dt", path, false, 0.0, 1.0, true)) s.maxDt = static_cast<float>(*v);
     if (s.minDt > s.maxDt) r.fail(join(path, "min_dt"), "must not exceed max_dt");
+    if (auto model = r.string(j, "viscosity", path, false)) {
+        const auto known = viscosityNames();
+        if (std::find(known.begin(), known.end(), *model) == known.end()) {
+            std::string list;
+            for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+            r.fail(join(path, "viscosity"), "unknown viscosity model \"" + *model + "\"" + suggestion(*model, known) +
+                                                "; known: " + list);
+        } else {
+            s.viscosity = *model;
+        }
+    }
     if (auto v = r.number(j, "xsph", path, false, 0.0, 1.0)) s.xsph = static_cast<float>(*v);
     if (auto v = r.boolean(j, "clamp_negative_pressure", path)) s.clampNegativePressure = *v;
     if (auto v = r.number(j, "max_density_error", path, false, 0.0, 0.5, true)) s.maxDensityError = static_cast<float>(*v);
