@@ -157,6 +157,17 @@ TEST(Cli, ValidateDescribesAGoodScene) {
     EXPECT_NE(r.output.find("MiB"), std::string::npos);
 }
 
+TEST(Cli, ShippedPoiseuilleChannelRunsOnPeriodicAxes) {
+    const std::string scene = std::string(TIDE_SCENES_DIR) + "/poiseuille.json";
+    const Result validate = run(kTide + " validate " + scene);
+    EXPECT_EQ(validate.exit, 0) << validate.output;
+    EXPECT_NE(validate.output.find("periodic in x, z"), std::string::npos) << validate.output;
+    const fs::path out = scratch("poiseuille_out");
+    const Result r = run(kTide + " run " + scene + " --quiet --end-time 0.05 --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    expectFullStats(out);  // particles_lost 0 at every frame
+}
+
 TEST(Cli, BadFlagsExitTwo) {
     EXPECT_EQ(run(kTide + " run").exit, 2);
     EXPECT_EQ(run(kTide + " frobnicate").exit, 2);
