@@ -131,6 +131,10 @@ std::vector<BrokenScene> brokenScenes() {
         {"plane with zero normal", smallScene(R"(, "obstacles": [{"type": "plane", "point": [0, 0.05, 0], "normal": [0, 0, 0]}])"), "obstacles[0].normal"},
         {"mesh file missing", smallScene(R"(, "obstacles": [{"type": "mesh", "file": "models/no_such_rock.obj"}])"), "obstacles[0].file: models/no_such_rock.obj"},
         {"unit scale zero", smallScene(R"(, "unit_scale": 0)"), "unit_scale"},
+        {"periodic not booleans", replace(ok, "\"max\": [0.2, 0.2, 0.2]}", "\"max\": [0.2, 0.2, 0.2], \"periodic\": [1, 0, 0]}"), "domain.periodic"},
+        {"periodic axis too short", replace(replace(ok, "\"max\": [0.2, 0.2, 0.2]}", "\"max\": [0.2, 0.2, 0.2], \"periodic\": [true, false, false]}"),
+                                            "\"particle_spacing\": 0.02", "\"particle_spacing\": 0.06"), "domain.periodic"},
+        {"unknown viscosity model", smallScene(R"(, "solver": {"viscosity": "moris"})"), "solver.viscosity: unknown viscosity model \"moris\" (did you mean \"morris\"?)"},
     };
 }
 
@@ -151,6 +155,17 @@ TEST(Cli, ValidateDescribesAGoodScene) {
     EXPECT_EQ(r.exit, 0) << r.output;
     EXPECT_NE(r.output.find("250 particles"), std::string::npos) << r.output;  // 5 × 5 × 10
     EXPECT_NE(r.output.find("MiB"), std::string::npos);
+}
+
+TEST(Cli, ShippedPoiseuilleChannelRunsOnPeriodicAxes) {
+    const std::string scene = std::string(TIDE_SCENES_DIR) + "/poiseuille.json";
+    const Result validate = run(kTide + " validate " + scene);
+    EXPECT_EQ(validate.exit, 0) << validate.output;
+    EXPECT_NE(validate.output.find("periodic in x, z"), std::string::npos) << validate.output;
+    const fs::path out = scratch("poiseuille_out");
+    const Result r = run(kTide + " run " + scene + " --quiet --end-time 0.05 --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    expectFullStats(out);  // particles_lost 0 at every frame
 }
 
 TEST(Cli, BadFlagsExitTwo) {

@@ -28,9 +28,12 @@ int validateCommand(const std::string& file) {
     const io::SceneEstimate size = io::estimate(scene);
     const WorldDef& w = scene.world;
     std::printf("scene      %s (%s)\n", scene.name.empty() ? "(unnamed)" : scene.name.c_str(), file.c_str());
-    std::printf("domain     [%g, %g, %g] .. [%g, %g, %g] m, particle spacing %g m, kernel support %g m\n",
+    std::string periodic;
+    for (int axis = 0; axis < 3; ++axis)
+        if (w.periodic[axis]) periodic += std::string(periodic.empty() ? ", periodic in " : ", ") + "xyz"[axis];
+    std::printf("domain     [%g, %g, %g] .. [%g, %g, %g] m%s, particle spacing %g m, kernel support %g m\n",
                 w.domainMin.x, w.domainMin.y, w.domainMin.z, w.domainMax.x, w.domainMax.y, w.domainMax.z,
-                w.particleSpacing, w.particleSpacing * w.supportRatio);
+                periodic.c_str(), w.particleSpacing, w.particleSpacing * w.supportRatio);
     std::printf("solver     %s, end time %g s, %d frames at %g fps\n", w.solver.method.c_str(), scene.endTime,
                 static_cast<int>(scene.endTime * scene.output.fps + 1e-9) + 1, scene.output.fps);
     std::printf("materials\n");

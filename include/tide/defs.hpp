@@ -42,7 +42,13 @@ struct SolverDef {
     /// Negative pressures (tension) pull free-surface particles into clumps; clamp them
     /// to zero by default, as most SPH codes do.
     bool clampNegativePressure = true;
-    /// XSPH velocity smoothing ε (Monaghan 1989), in [0, 1]: damps particle-scale noise.
+    /// Viscosity model by name, see tide::viscosityNames(): `morris` (Morris et al. 1997),
+    /// `monaghan` (Monaghan 2005), `muller` (Müller et al. 2003), all physical (driven by
+    /// the materials' Pa·s, no-slip walls), or `xsph` (no physical viscosity: XSPH smoothing
+    /// alone). Empty: the solver's own (classic: muller, the others: morris).
+    std::string viscosity;
+    /// XSPH velocity smoothing ε (Monaghan 1989), in [0, 1]: an artificial viscosity that
+    /// damps particle-scale noise, applied on top of any model; 0 switches it off.
     /// Negative: the solver's own default (classic 0.25, the others 0.01).
     float xsph = -1.0f;
     /// Incompressible solvers (dfsph, pcisph) iterate until the mean compression
@@ -61,6 +67,10 @@ struct WorldDef {
     glm::vec3 domainMin{0.0f, 0.0f, 0.0f};  ///< container corner, m
     glm::vec3 domainMax{1.0f, 1.0f, 1.0f};  ///< container corner, m
     bool walls = true;                      ///< keep particles inside the domain box
+    /// Periodic axes: no walls across them, a particle leaving through max re-enters at min,
+    /// and particles interact across the seam (nearest image). A periodic axis must be at
+    /// least 2 kernel supports long; make it a whole number of spacings so blocks tile it.
+    glm::bvec3 periodic{false, false, false};
     float wallRestitution = 0.0f;           ///< fraction of normal speed kept when hitting a wall
     glm::vec3 gravity{0.0f, -9.81f, 0.0f};  ///< m/s²
     float particleSpacing = 0.02f;          ///< initial distance between particles, m

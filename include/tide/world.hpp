@@ -41,6 +41,9 @@ struct WorldStats {
 /// Names of the solvers World accepts in SolverDef::method.
 std::vector<std::string> solverNames();
 
+/// Names of the viscosity models World accepts in SolverDef::viscosity.
+std::vector<std::string> viscosityNames();
+
 /// One simulation. Not copyable; move it or hold it by pointer.
 ///
 /// Creation validates the WorldDef and throws std::invalid_argument naming the field
@@ -63,7 +66,7 @@ public:
     /// Fill a box with particles on a lattice of the world's spacing, centred in the box,
     /// leaving out points inside obstacles. Adds all of them or none (see AddStatus).
     AddStatus addBlock(const BlockDef& block);
-    /// Whether a box lies inside the container (always true without walls).
+    /// Whether a box lies inside the container (without walls: inside the periodic axes' extent).
     [[nodiscard]] bool insideDomain(const glm::vec3& min, const glm::vec3& max) const;
     /// Number of particles addBlock(block) would add.
     [[nodiscard]] std::uint32_t countBlock(const BlockDef& block) const;

@@ -37,16 +37,17 @@ std::vector<float> axisCoordinates(float lo, float hi, float spacing, int layers
 void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& max, float spacing, int layers,
                                        float particleVolume, float searchRadius, int threads) {
     std::vector<bool> inX, inY, inZ;
-    const auto xs = axisCoordinates(min.x, max.x, spacing, layers, inX);
-    const auto ys = axisCoordinates(min.y, max.y, spacing, layers, inY);
-    const auto zs = axisCoordinates(min.z, max.z, spacing, layers, inZ);
+    const auto layersAlong = [&](int axis) { return periodic.periodic(axis) ? 0 : layers; };
+    const auto xs = axisCoordinates(min.x, max.x, spacing, layersAlong(0), inX);
+    const auto ys = axisCoordinates(min.y, max.y, spacing, layersAlong(1), inY);
+    const auto zs = axisCoordinates(min.z, max.z, spacing, layersAlong(2), inZ);
     position.clear();
     for (std::size_t k = 0; k < zs.size(); ++k)
         for (std::size_t j = 0; j < ys.size(); ++j)
             for (std::size_t i = 0; i < xs.size(); ++i)
                 if (!(inX[i] && inY[j] && inZ[k])) position.emplace_back(xs[i], ys[j], zs[k]);
     volume.assign(position.size(), particleVolume);
-    grid.build(position, searchRadius, threads);
+    grid.build(position, searchRadius, threads, periodic);
 }
 
 std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float particleVolume, float minSeparation,
@@ -61,7 +62,7 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
             const glm::vec3 x = points[i];
             grid.forEachNeighborRun(grid.cellOf(x), [&](std::uint32_t begin, std::uint32_t end) {
                 for (std::uint32_t k = begin; k < end && keep[i]; ++k) {
-                    const glm::vec3 d = position[sorted[k]] - x;
+                    const glm::vec3 d = periodic.delta(position[sorted[k]], x);
                     if (glm::dot(d, d) < limit2) keep[i] = 0;
                 }
             });
@@ -71,7 +72,7 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
     for (std::size_t i = 0; i < points.size(); ++i)
         if (keep[i]) position.push_back(points[i]);
     volume.resize(position.size(), particleVolume);
-    grid.build(position, searchRadius, threads);
+    grid.build(position, searchRadius, threads, periodic);
     return static_cast<std::uint32_t>(position.size() - before);
 }
 

@@ -11,6 +11,10 @@
 /// thickness is a complete lattice, so each particle's volume is simply that of a lattice
 /// particle (Akinci's per-particle volume correction is for single-layer sampling);
 /// a block of fluid resting against a wall, edge or corner then has exactly rest density.
+///
+/// A periodic axis has no walls across it: the shell leaves out those two faces, and the
+/// remaining walls run through the period on the same stretched lattice, so the lattice
+/// continues across the seam without a gap or a double layer.
 
 #include <cstdint>
 #include <span>
@@ -18,6 +22,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/periodic_box.hpp"
 #include "neighbors/neighbor_list.hpp"
 #include "neighbors/uniform_grid.hpp"
 
@@ -26,7 +31,7 @@ namespace tide {
 class BoundaryParticles {
 public:
     /// Sample the walls of the box [min, max] with a shell `layers` deep at `spacing`;
-    /// every particle gets `volume` (m³).
+    /// every particle gets `volume` (m³). No walls across the axes that `periodic` wraps.
     void sampleBoxShell(const glm::vec3& min, const glm::vec3& max, float spacing, int layers, float volume,
                         float searchRadius, int threads);
 
@@ -42,6 +47,7 @@ public:
     std::vector<glm::vec3> position;  ///< m
     std::vector<float> volume;        ///< V_b, m³
     UniformGrid grid;                 ///< built once: boundary particles do not move
+    PeriodicBox periodic;             ///< the domain's periodic axes (set before sampling): the grid wraps there
 };
 
 }  // namespace tide

@@ -17,6 +17,7 @@
 
 #include "boundary/boundary_particles.hpp"
 #include "core/kernels.hpp"
+#include "core/periodic_box.hpp"
 #include "core/parallel.hpp"
 #include "neighbors/neighbor_list.hpp"
 
@@ -26,7 +27,7 @@ class WallPressure {
 public:
     /// Kernel sums of each boundary particle over the fluid near it, at the current positions.
     void prepare(const BoundaryParticles& boundary, const NeighborList& fluidNear, std::span<const glm::vec3> fluid,
-                 const glm::vec3& gravity, float supportRadius, int threads) {
+                 const PeriodicBox& box, const glm::vec3& gravity, float supportRadius, int threads) {
         const kernels::CubicSpline w(supportRadius);
         const auto n = static_cast<std::uint32_t>(boundary.position.size());
         weightSum_.assign(n, 0.0f);
@@ -36,9 +37,10 @@ public:
             const glm::vec3 xb = boundary.position[b];
             float weights = 0.0f, lift = 0.0f;
             for (const std::uint32_t f : fluidNear.of(b)) {
-                const float wbf = w.value(glm::length(xb - fluid[f]));
+                const glm::vec3 xbf = box.delta(xb, fluid[f]);
+                const float wbf = w.value(glm::length(xbf));
                 weights += wbf;
-                lift += glm::dot(gravity, xb - fluid[f]) * wbf;
+                lift += glm::dot(gravity, xbf) * wbf;
             }
             weightSum_[b] = weights;
             gravityTerm_[b] = lift;
@@ -47,12 +49,13 @@ public:
 
     /// κ_b from the fluid's κ_f; returns nothing, read with kappa().
     void update(const NeighborList& fluidNear, std::span<const glm::vec3> fluid, std::span<const glm::vec3> boundary,
-                std::span<const float> fluidKappa, float supportRadius, int threads) {
+                const PeriodicBox& box, std::span<const float> fluidKappa, float supportRadius, int threads) {
         const kernels::CubicSpline w(supportRadius);
         parallelFor(static_cast<std::uint32_t>(kappa_.size()), threads, [&](std::uint32_t b) {
             if (weightSum_[b] <= 0.0f) return;
             float sum = gravityTerm_[b];
-            for (const std::uint32_t f : fluidNear.of(b)) sum += fluidKappa[f] * w.value(glm::length(boundary[b] - fluid[f]));
+            for (const std::uint32_t f : fluidNear.of(b))
+                sum += fluidKappa[f] * w.value(glm::length(box.delta(boundary[b], fluid[f])));
             kappa_[b] = std::max(sum / weightSum_[b], 0.0f);
         });
     }

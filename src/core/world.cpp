@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
@@ -11,6 +12,7 @@
 #include "boundary/wall_box.hpp"
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
+#include "core/periodic_box.hpp"
 #include "core/validate.hpp"
 #include "neighbors/neighbor_list.hpp"
 #include "neighbors/uniform_grid.hpp"
@@ -33,6 +35,12 @@ void validateWorldDef(const WorldDef& d) {
     }
     requirePositive("particleSpacing", d.particleSpacing);
     requireInRange("supportRatio", d.supportRatio, 1.0f, 4.0f);
+    const float support = d.particleSpacing * d.supportRatio;
+    for (int axis = 0; axis < 3; ++axis)
+        if (d.periodic[axis] && !(d.domainMax[axis] - d.domainMin[axis] >= 2.0f * support))
+            throw std::invalid_argument(std::string("domain.periodic: the periodic ") + "xyz"[axis] + " axis is " +
+                                        show(d.domainMax[axis] - d.domainMin[axis]) +
+                                        " m long, less than 2 kernel supports (2 × " + show(support) + " m)");
     requireInRange("wallRestitution", d.wallRestitution, 0.0f, 1.0f);
     if (d.capacity == 0) throw std::invalid_argument("capacity: must be > 0, got 0");
     if (d.threads < 0) throw std::invalid_argument("threads: must be >= 0, got " + std::to_string(d.threads));
@@ -85,6 +93,8 @@ struct World::Impl {
     float h;
     std::unique_ptr<Solver> solver;
     float latticeSum;
+    PeriodicBox periodic;
+    ViscosityModel viscosity;
     std::vector<MaterialDef> materials;
     ParticleStore particles;
     UniformGrid grid;
@@ -103,7 +113,10 @@ struct World::Impl {
         : def(d), threads(resolveThreadCount(d.threads)), h(d.particleSpacing * d.supportRatio),
           solver(makeSolver(d.solver.method)),
           latticeSum(latticeKernelSum(solver->densityKernel(), d.particleSpacing, h)),
+          periodic(PeriodicBox::make(d.domainMin, d.domainMax, d.periodic)),
+          viscosity(viscosityModel(d.solver.viscosity, solver->defaultViscosity())),
           soundSpeed(d.solver.soundSpeed) {
+        boundary.periodic = periodic;
         if (def.walls) {
             const int layers = static_cast<int>(std::ceil(h / def.particleSpacing));
             boundary.sampleBoxShell(def.domainMin, def.domainMax, def.particleSpacing, layers, 1.0f / latticeSum, h,
@@ -113,13 +126,15 @@ struct World::Impl {
 
     [[nodiscard]] float massOf(MaterialIndex m) const { return materials[m].restDensity / latticeSum; }
 
+    /// Whether a lattice lies inside the walls and within one period of every periodic axis.
     [[nodiscard]] bool insideDomain(const Lattice& lattice) const {
-        if (!def.walls) return true;
         const glm::vec3 last = lattice.first + lattice.spacing * glm::vec3(lattice.count - 1u);
         const float slack = 1e-5f * glm::length(def.domainMax - def.domainMin);
-        for (int axis = 0; axis < 3; ++axis)
+        for (int axis = 0; axis < 3; ++axis) {
+            if (!def.walls && !periodic.periodic(axis)) continue;
             if (lattice.first[axis] < def.domainMin[axis] - slack || last[axis] > def.domainMax[axis] + slack)
                 return false;
+        }
         return true;
     }
 
@@ -159,12 +174,12 @@ struct World::Impl {
     }
 
     void rebuildNeighbors() {
-        grid.build(particles.position, h, threads);
+        grid.build(particles.position, h, threads, periodic);
         if (def.reorderInterval > 0 && ++stepsSinceReorder >= def.reorderInterval) {
             // One permutation for every array: particles of a cell become contiguous in memory.
             const auto order = grid.sortedParticles();
             particles.permute(std::vector<std::uint32_t>(order.begin(), order.end()));
-            grid.build(particles.position, h, threads);
+            grid.build(particles.position, h, threads, periodic);
             stepsSinceReorder = 0;
         }
         neighbors.build(grid, particles.position, h, threads);
@@ -292,11 +307,18 @@ void World::addObstacle(const ObstacleDef& def) {
             break;
         default: throw std::invalid_argument("obstacle.shape: unknown shape");
     }
-    // Sample up to the outside of the wall shell (a plane is infinite); boundary particles
-    // that coincide with earlier ones (the shell, an overlapping obstacle) are not repeated.
+    // Sample up to the outside of the wall shell (a plane is infinite), or across one period
+    // of a periodic axis; boundary particles that coincide with earlier ones (the shell, an
+    // overlapping obstacle) are not repeated.
     const float shell = std::ceil(w.h / w.def.particleSpacing) * w.def.particleSpacing;
-    const auto points = sampleObstacle(obstacle, w.def.domainMin, w.def.particleSpacing, w.h,
-                                       w.def.domainMin - shell, w.def.domainMax + shell, w.threads);
+    glm::vec3 clipMin = w.def.domainMin - shell, clipMax = w.def.domainMax + shell;
+    for (int axis = 0; axis < 3; ++axis)
+        if (w.periodic.periodic(axis)) {
+            clipMin[axis] = w.def.domainMin[axis];
+            clipMax[axis] = w.def.domainMax[axis];
+        }
+    auto points = sampleObstacle(obstacle, w.def.domainMin, w.def.particleSpacing, w.h, clipMin, clipMax, w.threads);
+    for (glm::vec3& x : points) x = w.periodic.wrap(x);
     w.boundary.add(points, 1.0f / w.latticeSum, 0.5f * w.def.particleSpacing, w.h, w.threads);
     w.obstacles.push_back(obstacle);
 }
@@ -308,8 +330,9 @@ std::uint32_t World::countEscapedParticles() const {
     std::uint32_t escaped = 0;
     for (const glm::vec3& x : w.particles.position) {
         bool out = false;
-        for (int axis = 0; axis < 3 && w.def.walls; ++axis)
-            out = out || !(x[axis] >= w.def.domainMin[axis] && x[axis] <= w.def.domainMax[axis]);
+        for (int axis = 0; axis < 3 && w.def.walls; ++axis)  // a periodic axis has no outside
+            out = out || (!w.periodic.periodic(axis) &&
+                          !(x[axis] >= w.def.domainMin[axis] && x[axis] <= w.def.domainMax[axis]));
         for (const ObstacleDef& o : w.obstacles) out = out || signedDistance(o, x) < 0.0f;
         escaped += out;
     }
@@ -346,16 +369,29 @@ double World::step(double maxDt) {
     w.resolveSoundSpeed();
     w.rebuildNeighbors();
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
-                    w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.boundaryFluidNeighbors, w.threads, maxDt};
+                    w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.boundaryFluidNeighbors,
+                    w.periodic, w.viscosity, w.threads, maxDt};
     const double dt = w.solver->step(ctx);
     w.stats.lastPressureIterations = ctx.pressureIterations;
     w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);
     const float margin = w.solver->wallMargin() * w.def.particleSpacing;
     if (w.def.walls) {
-        const WallBox walls{w.def.domainMin, w.def.domainMax, margin, w.def.wallRestitution};
+        // No walls across a periodic axis.
+        constexpr float inf = std::numeric_limits<float>::infinity();
+        glm::vec3 lo = w.def.domainMin, hi = w.def.domainMax;
+        for (int axis = 0; axis < 3; ++axis)
+            if (w.periodic.periodic(axis)) {
+                lo[axis] = -inf;
+                hi[axis] = inf;
+            }
+        const WallBox walls{lo, hi, margin, w.def.wallRestitution};
         walls.enforce(w.particles, w.threads);
     }
     projectOutOfObstacles(w.obstacles, w.particles, margin, w.threads);
+    if (w.periodic.any)
+        parallelFor(w.particles.size(), w.threads, [&](std::uint32_t i) {
+            w.particles.position[i] = w.periodic.wrap(w.particles.position[i]);
+        });
     w.updateStats(dt);
     w.emit(w.time, dt);
     w.time += dt;

@@ -194,8 +194,8 @@ bool readBox(Reader& r, const json& j, const std::string& path, float scale, glm
 
 void readSolver(Reader& r, const json& j, Scene& scene) {
     const std::string path = "solver";
-    if (!r.object(j, path, {"method", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "xsph",
-                            "clamp_negative_pressure", "support_ratio", "max_density_error", "min_iterations",
+    if (!r.object(j, path, {"method", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "viscosity",
+                            "xsph", "clamp_negative_pressure", "support_ratio", "max_density_error", "min_iterations",
                             "max_iterations"}))
         return;
     SolverDef& s = scene.world.solver;
@@ -220,6 +220,17 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     if (auto v = r.number(j, "min_dt", path, false, 0.0, 1.0, true)) s.minDt = static_cast<float>(*v);
     if (auto v = r.number(j, "max_dt", path, false, 0.0, 1.0, true)) s.maxDt = static_cast<float>(*v);
     if (s.minDt > s.maxDt) r.fail(join(path, "min_dt"), "must not exceed max_dt");
+    if (auto model = r.string(j, "viscosity", path, false)) {
+        const auto known = viscosityNames();
+        if (std::find(known.begin(), known.end(), *model) == known.end()) {
+            std::string list;
+            for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+            r.fail(join(path, "viscosity"), "unknown viscosity model \"" + *model + "\"" + suggestion(*model, known) +
+                                                "; known: " + list);
+        } else {
+            s.viscosity = *model;
+        }
+    }
     if (auto v = r.number(j, "xsph", path, false, 0.0, 1.0)) s.xsph = static_cast<float>(*v);
     if (auto v = r.boolean(j, "clamp_negative_pressure", path)) s.clampNegativePressure = *v;
     if (auto v = r.number(j, "max_density_error", path, false, 0.0, 0.5, true)) s.maxDensityError = static_cast<float>(*v);
@@ -431,7 +442,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     bool domainOk = false;
     if (!root.contains("domain")) {
         r.fail("domain", "missing (required)");
-    } else if (r.object(root["domain"], "domain", {"min", "max"})) {
+    } else if (r.object(root["domain"], "domain", {"min", "max", "periodic"})) {
         glm::vec3 lo, hi;
         if (readBox(r, root["domain"], "domain", scale, lo, hi)) {
             if (glm::any(glm::equal(lo, hi))) {
@@ -442,11 +453,33 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
                 domainOk = true;
             }
         }
+        if (root["domain"].contains("periodic")) {
+            const json& v = root["domain"]["periodic"];
+            const auto isBool = [](const json& e) { return e.is_boolean(); };
+            if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), isBool))
+                r.fail("domain.periodic", "must be an array of 3 booleans (x, y, z), got " + show(v));
+            else
+                for (int a = 0; a < 3; ++a) w.periodic[a] = v[static_cast<std::size_t>(a)].get<bool>();
+        }
     }
     if (auto g = r.vec3(root, "gravity", "", false)) w.gravity = *g * scale;
     if (auto v = r.number(root, "particle_spacing", "", true, 0.0, 1e6, true)) w.particleSpacing = static_cast<float>(*v) * scale;
     if (auto v = r.number(root, "end_time", "", true, 0.0, 1e7, true)) scene.endTime = *v;
     if (root.contains("solver")) readSolver(r, root["solver"], scene);
+
+    if (domainOk) {
+        const float support = w.particleSpacing * w.supportRatio;
+        for (int a = 0; a < 3; ++a) {
+            const float extent = w.domainMax[a] - w.domainMin[a];
+            if (w.periodic[a] && !(extent >= 2.0f * support)) {
+                std::ostringstream msg;
+                msg << "the periodic " << "xyz"[a] << " axis is " << extent / scale
+                    << " long, less than 2 kernel supports (2 × " << support / scale
+                    << "); lengthen it or make particle_spacing smaller";
+                r.fail("domain.periodic", msg.str());
+            }
+        }
+    }
 
     readMaterials(r, r.array(root, "materials", "", true), scene);
     if (root.contains("materials") && root["materials"].is_array() && root["materials"].empty())

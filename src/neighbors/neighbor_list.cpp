@@ -1,6 +1,7 @@
 #include "neighbors/neighbor_list.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include "core/parallel.hpp"
 
@@ -33,15 +34,24 @@ struct CandidateSet {
 
     /// Appends to `out` the candidates within the radius of q, skipping `skip`. Branch-free:
     /// every candidate is written and the end advances only for hits (~15 % of candidates,
-    /// so a branch on them would mispredict).
-    void appendWithin(const glm::vec3& q, float radius2, std::uint32_t skip, std::vector<std::uint32_t>& out) const {
+    /// so a branch on them would mispredict). Distances are to the nearest periodic image.
+    void appendWithin(const glm::vec3& q, float radius2, std::uint32_t skip, const PeriodicBox& box,
+                      std::vector<std::uint32_t>& out) const {
         std::size_t size = out.size();
         out.resize(size + index.size());
         std::uint32_t* dst = out.data();
-        for (std::size_t t = 0; t < index.size(); ++t) {
-            const float dx = q.x - x[t], dy = q.y - y[t], dz = q.z - z[t];
-            dst[size] = index[t];
-            size += static_cast<std::size_t>((dx * dx + dy * dy + dz * dz <= radius2) & (index[t] != skip));
+        if (!box.any) {
+            for (std::size_t t = 0; t < index.size(); ++t) {
+                const float dx = q.x - x[t], dy = q.y - y[t], dz = q.z - z[t];
+                dst[size] = index[t];
+                size += static_cast<std::size_t>((dx * dx + dy * dy + dz * dz <= radius2) & (index[t] != skip));
+            }
+        } else {
+            for (std::size_t t = 0; t < index.size(); ++t) {
+                const glm::vec3 d = box.nearestImage({q.x - x[t], q.y - y[t], q.z - z[t]});
+                dst[size] = index[t];
+                size += static_cast<std::size_t>((d.x * d.x + d.y * d.y + d.z * d.z <= radius2) & (index[t] != skip));
+            }
         }
         out.resize(size);
     }
@@ -102,7 +112,7 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
             for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) {
                 const std::uint32_t i = sorted[k];
                 begin_[i] = buffer.size();
-                candidates.appendWithin(positions[i], radius2, i, buffer);
+                candidates.appendWithin(positions[i], radius2, i, grid.periodic(), buffer);
                 count_[i] = static_cast<std::uint32_t>(buffer.size() - begin_[i]);
             }
         });
@@ -125,9 +135,16 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
     auto chunkBegin = [&](int c) { return static_cast<std::uint32_t>(std::uint64_t{n} * c / chunks); };
     const auto sorted = grid.sortedParticles();
     // Queries farther than the radius from the grid's box have no neighbours (and would
-    // otherwise scan the clamped border cells): most of a container's wall shell.
-    const glm::vec3 lo = grid.origin() - glm::vec3(radius);
-    const glm::vec3 hi = grid.origin() + grid.cellSize() * glm::vec3(grid.dims()) + glm::vec3(radius);
+    // otherwise scan the clamped border cells): most of a container's wall shell. A periodic
+    // axis has no far side.
+    const PeriodicBox& box = grid.periodic();
+    glm::vec3 lo = grid.origin() - glm::vec3(radius);
+    glm::vec3 hi = grid.origin() + grid.cellSize() * glm::vec3(grid.dims()) + glm::vec3(radius);
+    for (int axis = 0; axis < 3; ++axis)
+        if (box.periodic(axis)) {
+            lo[axis] = -std::numeric_limits<float>::infinity();
+            hi[axis] = std::numeric_limits<float>::infinity();
+        }
 #pragma omp parallel for schedule(static, 1) num_threads(chunks)
     for (int c = 0; c < chunks; ++c) {
         std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
@@ -141,7 +158,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
             }
             grid.forEachNeighborRun(grid.cellOf(q), [&](std::uint32_t first, std::uint32_t last) {
                 for (std::uint32_t k = first; k < last; ++k) {
-                    const glm::vec3 d = q - gridPositions[sorted[k]];
+                    const glm::vec3 d = box.delta(q, gridPositions[sorted[k]]);
                     if (d.x * d.x + d.y * d.y + d.z * d.z <= radius2) buffer.push_back(sorted[k]);
                 }
             });

@@ -6,6 +6,7 @@
 /// including the particle itself, and never capped. Each particle's list is a contiguous
 /// slice of one index array (begin + count per particle, so lists may be laid out in cell
 /// order for speed while being looked up by particle index).
+/// On the periodic axes of the grid's PeriodicBox, distances are to the nearest image.
 
 #include <cstdint>
 #include <span>
@@ -19,8 +20,9 @@ namespace tide {
 
 class NeighborList {
 public:
-    /// Find, for every particle, all others with |x_i − x_j|² ≤ radius². The grid must have
-    /// been built from the same positions with a cell size ≥ radius.
+    /// Find, for every particle, all others with |x_i − x_j|² ≤ radius² (nearest image on the
+    /// grid's periodic axes). The grid must have been built from the same positions with a
+    /// cell size ≥ radius.
     void build(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads);
     /// Find, for every query point i, the points j of another set (the one `grid` was built
     /// from, at `gridPositions`) with |q_i − x_j|² ≤ radius².

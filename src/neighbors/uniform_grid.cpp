@@ -22,29 +22,39 @@ glm::ivec3 UniformGrid::cellOf(const glm::vec3& x) const {
     return {clampCoord(c.x, dims_.x), clampCoord(c.y, dims_.y), clampCoord(c.z, dims_.z)};
 }
 
-void UniformGrid::build(std::span<const glm::vec3> positions, float minCellSize, int threads) {
+void UniformGrid::build(std::span<const glm::vec3> positions, float minCellSize, int threads,
+                        const PeriodicBox& periodic) {
     const auto n = static_cast<std::uint32_t>(positions.size());
+    periodic_ = periodic;
     glm::vec3 lo(0.0f), hi(0.0f);
     if (n > 0) {
         auto finiteOr = [](float v) { return std::isfinite(v) ? v : 0.0f; };
         for (int axis = 0; axis < 3; ++axis) {
+            if (periodic.periodic(axis)) continue;
             lo[axis] = -parallelMax(n, threads, [&](std::uint32_t i) { return -finiteOr(positions[i][axis]); });
             hi[axis] = parallelMax(n, threads, [&](std::uint32_t i) { return finiteOr(positions[i][axis]); });
         }
     }
+    for (int axis = 0; axis < 3; ++axis)
+        if (periodic.periodic(axis)) {
+            lo[axis] = periodic.min[axis];
+            hi[axis] = periodic.max[axis];
+        }
     const glm::vec3 extent = hi - lo;
     const double maxCells = 8.0 * n + 4096.0;
     double cell = minCellSize;
-    auto cellsFor = [&](double edge) {
-        return (std::floor(extent.x / edge) + 1.0) * (std::floor(extent.y / edge) + 1.0) *
-               (std::floor(extent.z / edge) + 1.0);
+    // Cells along an axis: enough to hold the extent's far end, or exactly tiling a period.
+    auto cellsAlong = [&](int axis, double edge) {
+        const double cells = std::floor(extent[axis] / edge);
+        return periodic.periodic(axis) ? std::max(1.0, cells) : cells + 1.0;
     };
+    auto cellsFor = [&](double edge) { return cellsAlong(0, edge) * cellsAlong(1, edge) * cellsAlong(2, edge); };
     while (cellsFor(cell) > maxCells) cell *= 1.5;
     cellSize_ = static_cast<float>(cell);
     invCellSize_ = 1.0f / cellSize_;
     origin_ = lo;
-    dims_ = glm::ivec3(static_cast<int>(extent.x / cell) + 1, static_cast<int>(extent.y / cell) + 1,
-                       static_cast<int>(extent.z / cell) + 1);
+    dims_ = glm::ivec3(static_cast<int>(cellsAlong(0, cell)), static_cast<int>(cellsAlong(1, cell)),
+                       static_cast<int>(cellsAlong(2, cell)));
     const auto cells = static_cast<std::uint32_t>(dims_.x) * static_cast<std::uint32_t>(dims_.y) *
                        static_cast<std::uint32_t>(dims_.z);
 

@@ -1,11 +1,14 @@
 #include "solvers/classic_muller2003.hpp"
 
+#include <algorithm>
+
 #include <glm/geometric.hpp>
 
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
 #include "solvers/equation_of_state.hpp"
 #include "solvers/time_step.hpp"
+#include "solvers/viscosity.hpp"
 
 namespace tide {
 
@@ -17,12 +20,12 @@ void ClassicMuller2003::computeDensityAndPressure(StepContext& ctx) const {
         const glm::vec3 xi = p.position[i];
         float rho = p.mass[i] * selfWeight;
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 d = xi - p.position[j];
+            const glm::vec3 d = ctx.delta(xi, p.position[j]);
             rho += p.mass[j] * poly6.valueSq(glm::dot(d, d));
         }
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 d = xi - ctx.boundary.position[b];
+            const glm::vec3 d = ctx.delta(xi, ctx.boundary.position[b]);
             boundaryVolume += ctx.boundary.volume[b] * poly6.valueSq(glm::dot(d, d));
         }
         const MaterialDef& mat = ctx.materials[p.material[i]];
@@ -37,6 +40,13 @@ void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
     ParticleStore& p = ctx.particles;
     const kernels::Spiky spiky(ctx.supportRadius);
     const kernels::Viscosity viscosity(ctx.supportRadius);
+    // Eq. (14), the default model, shares the pressure loop's pass over the neighbours (as
+    // addViscosity computes it for the other solvers); another model is added before it.
+    const bool muller = ctx.viscosity == ViscosityModel::Muller2003;
+    if (!muller) {
+        std::fill(p.acceleration.begin(), p.acceleration.end(), glm::vec3(0.0f));
+        addViscosity(ctx, p.acceleration);
+    }
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         const glm::vec3 vi = p.velocity[i];
@@ -45,19 +55,29 @@ void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
         glm::vec3 pressureSum(0.0f);
         glm::vec3 viscousSum(0.0f);
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = xi - p.position[j];
+            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
             const float r = glm::length(rij);
             const float massOverRho = p.mass[j] / p.density[j];
             // −∇W_spiky = 45/(πh⁶)(h − r)² r̂: positive pressure pushes i away from j.
             if (r > 0.0f) pressureSum += (massOverRho * 0.5f * (pi + p.pressure[j]) * -spiky.gradientScale(r) / r) * rij;
-            const float muij = 0.5f * (mui + ctx.materials[p.material[j]].viscosity);
-            viscousSum += (massOverRho * muij * viscosity.laplacian(r)) * (p.velocity[j] - vi);
+            if (muller) {
+                const float muij = 0.5f * (mui + ctx.materials[p.material[j]].viscosity);
+                viscousSum += (massOverRho * muij * viscosity.laplacian(r)) * (p.velocity[j] - vi);
+            }
         }
+        float wallViscosity = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             const float r = glm::length(rib);
             if (r > 0.0f) pressureSum += (ctx.boundary.volume[b] * pi * -spiky.gradientScale(r) / r) * rib;
+            if (muller) wallViscosity += ctx.boundary.volume[b] * viscosity.laplacian(r);
         }
+        if (!muller) {
+            p.acceleration[i] += ctx.gravity + pressureSum / p.density[i];
+            return;
+        }
+        // No-slip walls: v_b = −v_i (see viscosity.cpp).
+        viscousSum -= (2.0f * mui * wallViscosity) * vi;
         p.acceleration[i] = ctx.gravity + (pressureSum + viscousSum) / p.density[i];
     });
 }
@@ -74,14 +94,13 @@ double ClassicMuller2003::step(StepContext& ctx) {
     const float maxAccel2 = parallelMax(n, ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.acceleration[i], p.acceleration[i]);
     }, 0.0f);
-    float maxNu = 0.0f;
-    for (const MaterialDef& m : ctx.materials) maxNu = std::max(maxNu, m.viscosity / m.restDensity);
     const double dt = stableTimeStep(ctx.solver, ctx.particleSpacing, ctx.soundSpeed, std::sqrt(maxSpeed2),
-                                     std::sqrt(maxAccel2), maxNu, ctx.maxDt);
+                                     std::sqrt(maxAccel2), maxKinematicViscosity(ctx), ctx.maxDt);
 
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
-    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.25f, ctx.threads);
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
+                ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.25f, ctx.threads);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     return dt;
 }

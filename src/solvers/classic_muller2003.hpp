@@ -6,6 +6,8 @@
 ///   pressure   p = κ(ρ − ρ0), κ = c²; or Tait's (Becker & Teschner 2007)    (eq. 12)
 ///   a_p,i = −1/ρ_i Σ_j m_j (p_i + p_j)/(2ρ_j) ∇W_spiky(r_ij)                 (eq. 10)
 ///   a_v,i = μ_ij/ρ_i Σ_j m_j (v_j − v_i)/ρ_j ∇²W_viscosity(r_ij)            (eq. 14)
+/// (eq. 14 is the default viscosity model `muller`; SolverDef::viscosity may name another,
+/// see viscosity.hpp).
 /// Each sum carries the neighbour's own mass (seed eq. 10), so materials of different
 /// rest density and viscosity share one simulation; μ_ij = (μ_i + μ_j)/2 keeps the viscous
 /// force antisymmetric, so momentum is conserved between materials.
@@ -31,6 +33,7 @@ public:
     /// lattice position half a spacing from a wall; the projection does it.
     [[nodiscard]] float wallMargin() const override { return 0.5f; }
     [[nodiscard]] bool usesWallPressure() const override { return false; }
+    [[nodiscard]] ViscosityModel defaultViscosity() const override { return ViscosityModel::Muller2003; }
     double step(StepContext& ctx) override;
 
 private:

@@ -30,12 +30,12 @@ float densityRate(const StepContext& ctx, const kernels::CubicSpline& w, std::ui
     const glm::vec3 vi = p.velocity[i];
     float rate = 0.0f;
     for (const std::uint32_t j : ctx.neighbors.of(i)) {
-        const glm::vec3 rij = xi - p.position[j];
+        const glm::vec3 rij = ctx.delta(xi, p.position[j]);
         rate += p.mass[j] * glm::dot(vi - p.velocity[j], w.gradient(rij, glm::length(rij)));
     }
     const float rho0 = ctx.materials[p.material[i]].restDensity;
     for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-        const glm::vec3 rib = xi - ctx.boundary.position[b];
+        const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
         rate += rho0 * ctx.boundary.volume[b] * glm::dot(vi, w.gradient(rib, glm::length(rib)));
     }
     return rate;
@@ -49,10 +49,10 @@ float predictedDensity(const StepContext& ctx, const kernels::CubicSpline& w, st
     const glm::vec3 xi = p.position[i] + dt * p.velocity[i];
     float rho = p.mass[i] * w.value(0.0f);
     for (const std::uint32_t j : ctx.neighbors.of(i))
-        rho += p.mass[j] * w.value(glm::length(xi - p.position[j] - dt * p.velocity[j]));
+        rho += p.mass[j] * w.value(glm::length(ctx.delta(xi, p.position[j] + dt * p.velocity[j])));
     float volume = 0.0f;
     for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-        volume += ctx.boundary.volume[b] * w.value(glm::length(xi - ctx.boundary.position[b]));
+        volume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
     return rho + ctx.materials[p.material[i]].restDensity * volume;
 }
 }  // namespace
@@ -66,14 +66,14 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
         glm::vec3 fluidGrad(0.0f), boundaryGrad(0.0f);
         float sumSquares = 0.0f;
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = xi - p.position[j];
+            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
             const glm::vec3 g = p.mass[j] * w.gradient(rij, glm::length(rij));
             fluidGrad += g;
             sumSquares += glm::dot(g, g);
         }
         const float rho0 = ctx.materials[p.material[i]].restDensity;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             boundaryGrad += (rho0 * ctx.boundary.volume[b]) * w.gradient(rib, glm::length(rib));
         }
         // ρ_i's response to its own κ_i: the boundary pushes with the mirrored pressure. The
@@ -92,13 +92,13 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
         const float ki = k_[i] / p.density[i];
         glm::vec3 dv(0.0f);
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = xi - p.position[j];
+            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
             dv += (p.mass[j] * (ki + k_[j] / p.density[j])) * w.gradient(rij, glm::length(rij));
         }
         // Ψ_b (κ_i/ρ_i + κ_b/ρ_b) ∇W_ib with ρ_b = ρ_i; κ_b = κ_i when mirrored.
         const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             const float kSum = k_[i] + (boundaryK.empty() ? k_[i] : boundaryK[b]);
             dv += (ctx.boundary.volume[b] * psi * kSum) * w.gradient(rib, glm::length(rib));
         }
@@ -150,10 +150,12 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
     k_.resize(n);
     boundaryK_.resize(nb);
     boundaryKappa_.assign(nb, 0.0f);
-    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.gravity, ctx.supportRadius, ctx.threads);
+    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
+                  ctx.supportRadius, ctx.threads);
     // Applies the change of κ (fluid, then walls from it) as a velocity change.
     auto push = [&] {
-        wall_.update(ctx.boundaryFluidNeighbors, p.position, ctx.boundary.position, kappa, ctx.supportRadius, ctx.threads);
+        wall_.update(ctx.boundaryFluidNeighbors, p.position, ctx.boundary.position, ctx.periodic,
+                     kappa, ctx.supportRadius, ctx.threads);
         const auto wallKappa = wall_.kappa();
         parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
             boundaryK_[b] = (wallKappa[b] - boundaryKappa_[b]) * dt;
@@ -211,7 +213,8 @@ double DfsphBender2017::step(StepContext& ctx) {
         p.velocity[i] += dtf * accel_[i];
     });
     // XSPH is a non-pressure force too: smoothing after the density solve would undo part of it.
-    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
+                ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
     const int densityIterations = solveDensity(ctx, dtf);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         p.position[i] += dtf * p.velocity[i];

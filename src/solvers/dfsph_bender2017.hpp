@@ -13,7 +13,7 @@
 /// compression-only increments stop once the mean is met and leave it at ~70 %.
 /// Boundaries are Akinci et al. 2012 particles (Ψ_b = ρ0_i V_b) pushing with
 /// Ψ_b (κ_i + κ_b)/ρ_i ∇W_ib: κ_b mirrors κ_i in the divergence solve and is the wall pressure
-/// of Adami et al. 2012 in the density solve. Cubic spline kernel, Monaghan 2005 viscosity,
+/// of Adami et al. 2012 in the density solve. Cubic spline kernel, SolverDef::viscosity (Morris 1997),
 /// CFL time step (no sound speed: the solver, not the time step, keeps the fluid incompressible).
 
 #include <vector>

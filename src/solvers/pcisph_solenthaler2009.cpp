@@ -42,7 +42,7 @@ void PcisphSolenthaler2009::computeDelta(StepContext& ctx, float dt) {
         glm::vec3 fluidGrad(0.0f);
         float squares = 0.0f;
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = xi - p.position[j];
+            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
             const glm::vec3 g = w.gradient(rij, glm::length(rij));
             fluidGrad += p.mass[j] * g;
             squares += p.mass[i] * p.mass[j] * glm::dot(g, g);
@@ -50,7 +50,7 @@ void PcisphSolenthaler2009::computeDelta(StepContext& ctx, float dt) {
         const float rho0 = ctx.materials[p.material[i]].restDensity;
         glm::vec3 boundaryGrad(0.0f);
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             boundaryGrad += (rho0 * ctx.boundary.volume[b]) * w.gradient(rib, glm::length(rib));
         }
         // Walls push with the mirrored pressure (Ψ_b (p_i + p_b)/ρ0², p_b ≈ p_i), so i's own
@@ -79,10 +79,10 @@ void PcisphSolenthaler2009::predictCompression(StepContext& ctx) {
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = predicted_[i];
         float rho = p.mass[i] * self;
-        for (const std::uint32_t j : ctx.neighbors.of(i)) rho += p.mass[j] * w.value(glm::length(xi - predicted_[j]));
+        for (const std::uint32_t j : ctx.neighbors.of(i)) rho += p.mass[j] * w.value(glm::length(ctx.delta(xi, predicted_[j])));
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(xi - ctx.boundary.position[b]));
+            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
         const float rho0 = ctx.materials[p.material[i]].restDensity;
         residual_[i] = rho + rho0 * boundaryVolume - rho0;
         // Expansion is an error only where pressure could still relax: free-surface particles
@@ -108,21 +108,22 @@ void PcisphSolenthaler2009::computePressureAccel(StepContext& ctx) {
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         kappa_[i] = pressure_[i] / ctx.materials[p.material[i]].restDensity;
     });
-    wall_.update(ctx.boundaryFluidNeighbors, p.position, ctx.boundary.position, kappa_, ctx.supportRadius, ctx.threads);
+    wall_.update(ctx.boundaryFluidNeighbors, p.position, ctx.boundary.position, ctx.periodic, kappa_, ctx.supportRadius,
+                 ctx.threads);
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         const float rho0 = ctx.materials[p.material[i]].restDensity;
         const float pi = pressure_[i] / (rho0 * rho0);
         glm::vec3 sum(0.0f);
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = xi - p.position[j];
+            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
             const float rho0j = ctx.materials[p.material[j]].restDensity;
             sum += (p.mass[j] * (pi + pressure_[j] / (rho0j * rho0j))) * w.gradient(rij, glm::length(rij));
         }
         // Ψ_b (p_i + p_b)/ρ0², p_b the wall pressure (Akinci et al. 2012, Adami et al. 2012).
         const auto wallKappa = wall_.kappa();
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             sum += (ctx.boundary.volume[b] * (rho0 * pi + wallKappa[b])) * w.gradient(rib, glm::length(rib));
         }
         pressureAccel_[i] = -sum;
@@ -161,7 +162,8 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
     sph::computeDensities(ctx);
-    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.gravity, ctx.supportRadius, ctx.threads);
+    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity, ctx.supportRadius,
+                  ctx.threads);
     sph::addGravityAndViscosity(ctx, accel_);
     const float nu = sph::maxKinematicViscosity(ctx);
     SolverDef limits = ctx.solver;
@@ -196,7 +198,8 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
         p.velocity[i] += dtf * p.acceleration[i];
         p.pressure[i] = pressure_[i];
     });
-    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f,
+                ctx.threads);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     ctx.pressureIterations = iterations;
     return dt;

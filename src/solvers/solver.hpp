@@ -14,7 +14,9 @@
 #include <tide/particles.hpp>
 
 #include "boundary/boundary_particles.hpp"
+#include "core/periodic_box.hpp"
 #include "neighbors/neighbor_list.hpp"
+#include "solvers/viscosity.hpp"
 
 namespace tide {
 
@@ -31,9 +33,15 @@ struct StepContext {
     const BoundaryParticles& boundary;      ///< static walls (may be empty)
     const NeighborList& boundaryNeighbors;  ///< boundary particles near each fluid particle
     const NeighborList& boundaryFluidNeighbors;  ///< fluid particles near each boundary particle
+    PeriodicBox periodic;    ///< the domain's periodic axes
+    ViscosityModel viscosity;  ///< SolverDef::viscosity resolved (the solver's own when not named)
     int threads;
     double maxDt;            ///< the step may not be longer (e.g. to land on a frame time)
     int pressureIterations = 0;  ///< out: iterations the pressure solve took this step
+
+    /// x_a − x_b to the nearest periodic image: every pair vector of a solver, fluid–fluid
+    /// and fluid–boundary, goes through this (the plain difference without periodic axes).
+    [[nodiscard]] glm::vec3 delta(const glm::vec3& a, const glm::vec3& b) const { return periodic.delta(a, b); }
 };
 
 /// The kernel a solver computes density with: particle masses are calibrated with it.
@@ -50,6 +58,8 @@ public:
     /// Closest a particle centre may come to a wall or obstacle, in particle spacings: where
     /// the projection after each step puts strays back.
     [[nodiscard]] virtual float wallMargin() const { return 0.1f; }
+    /// The viscosity model when SolverDef::viscosity names none.
+    [[nodiscard]] virtual ViscosityModel defaultViscosity() const { return ViscosityModel::Morris1997; }
     /// Whether step() reads StepContext::boundaryFluidNeighbors (built only then).
     [[nodiscard]] virtual bool usesWallPressure() const { return true; }
     /// Returns the length of the step taken, s.

@@ -1,13 +1,14 @@
 #pragma once
 /// \file
 /// Sums shared by the solvers built on the cubic spline kernel (wcsph, dfsph): density
-/// with Akinci et al. 2012 boundary contributions, and physical viscosity.
+/// with Akinci et al. 2012 boundary contributions, and gravity plus viscosity.
 
 #include <glm/geometric.hpp>
 
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
 #include "solvers/solver.hpp"
+#include "solvers/viscosity.hpp"
 
 namespace tide::sph {
 
@@ -28,45 +29,24 @@ inline void computeDensities(StepContext& ctx) {
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         float rho = p.mass[i] * self;
-        for (const std::uint32_t j : ctx.neighbors.of(i)) rho += p.mass[j] * w.value(glm::length(xi - p.position[j]));
+        for (const std::uint32_t j : ctx.neighbors.of(i))
+            rho += p.mass[j] * w.value(glm::length(ctx.delta(xi, p.position[j])));
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(xi - ctx.boundary.position[b]));
+            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
         p.density[i] = rho + ctx.materials[p.material[i]].restDensity * boundaryVolume;
     });
 }
 
-/// Adds gravity and physical viscosity to `accel`: the Laplacian form of Monaghan 2005
-/// ("Smoothed particle hydrodynamics", Rep. Prog. Phys., eq. 6.11/6.12),
-///   a_i = 2(d + 2) Σ_j (m_j/ρ_j) ν_ij (v_ij · r_ij)/(r² + 0.01h²) ∇W_ij,  d = 3,
-/// with ν_ij = (μ_i + μ_j)/(ρ_i + ρ_j): it converges to ν∇²v for real Pa·s values.
+/// `accel` = gravity + the physical viscosity of the model SolverDef::viscosity names
+/// (Morris et al. 1997 by default; see viscosity.hpp).
 inline void addGravityAndViscosity(StepContext& ctx, std::vector<glm::vec3>& accel) {
-    ParticleStore& p = ctx.particles;
-    const kernels::CubicSpline w(ctx.supportRadius);
-    const float h2 = ctx.supportRadius * ctx.supportRadius * 0.25f;  // smoothing length = support / 2
-    accel.resize(p.size());
-    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
-        const glm::vec3 xi = p.position[i];
-        const glm::vec3 vi = p.velocity[i];
-        const float mui = ctx.materials[p.material[i]].viscosity;
-        glm::vec3 sum(0.0f);
-        for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = xi - p.position[j];
-            const float r = glm::length(rij);
-            const float nu = (mui + ctx.materials[p.material[j]].viscosity) / (p.density[i] + p.density[j]);
-            const float vr = glm::dot(vi - p.velocity[j], rij);
-            sum += (p.mass[j] / p.density[j] * nu * vr / (r * r + 0.01f * h2)) * w.gradient(rij, r);
-        }
-        accel[i] = ctx.gravity + 10.0f * sum;
-    });
+    accel.assign(ctx.particles.size(), ctx.gravity);
+    addViscosity(ctx, accel);
 }
 
-/// Largest kinematic viscosity μ/ρ0 over the materials, m²/s (for the viscous dt limit).
-inline float maxKinematicViscosity(const StepContext& ctx) {
-    float nu = 0.0f;
-    for (const MaterialDef& m : ctx.materials) nu = std::max(nu, m.viscosity / m.restDensity);
-    return nu;
-}
+/// Largest kinematic viscosity μ/ρ0 the model uses, m²/s (for the viscous dt limit).
+inline float maxKinematicViscosity(const StepContext& ctx) { return tide::maxKinematicViscosity(ctx); }
 
 /// Largest particle speed, m/s.
 inline float maxSpeed(const StepContext& ctx) {

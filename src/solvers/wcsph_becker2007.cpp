@@ -22,8 +22,10 @@ double WcsphBecker2007::step(StepContext& ctx) {
     // Walls take the pressure of the fluid around them, extrapolated hydrostatically.
     kappa_.resize(n);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { kappa_[i] = p.pressure[i] / p.density[i]; });
-    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.gravity, ctx.supportRadius, ctx.threads);
-    wall_.update(ctx.boundaryFluidNeighbors, p.position, ctx.boundary.position, kappa_, ctx.supportRadius, ctx.threads);
+    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
+                  ctx.supportRadius, ctx.threads);
+    wall_.update(ctx.boundaryFluidNeighbors, p.position, ctx.boundary.position, ctx.periodic,
+                 kappa_, ctx.supportRadius, ctx.threads);
     const auto wallKappa = wall_.kappa();
     const kernels::CubicSpline w(ctx.supportRadius);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -31,13 +33,13 @@ double WcsphBecker2007::step(StepContext& ctx) {
         const float pi = p.pressure[i] / (p.density[i] * p.density[i]);
         glm::vec3 sum(0.0f);
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = xi - p.position[j];
+            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
             sum += (p.mass[j] * (pi + p.pressure[j] / (p.density[j] * p.density[j]))) * w.gradient(rij, glm::length(rij));
         }
         // Ψ_b (p_i/ρ_i² + p_b/ρ_b²) with ρ_b = ρ_i (Akinci et al. 2012, Adami et al. 2012).
         const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 rib = xi - ctx.boundary.position[b];
+            const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             sum += (ctx.boundary.volume[b] * psi * (kappa_[i] + wallKappa[b])) * w.gradient(rib, glm::length(rib));
         }
         p.acceleration[i] = accel_[i] - sum;
@@ -50,7 +52,8 @@ double WcsphBecker2007::step(StepContext& ctx) {
                                      ctx.maxDt);
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
-    xsph_.apply(p, ctx.neighbors, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
+                ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     return dt;
 }

@@ -5,8 +5,9 @@
 /// negative pressures clamped), the symmetric pressure force
 ///   a_i = −Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij − Σ_b ρ0_i V_b (p_i/ρ_i² + p_b/ρ_i²) ∇W_ib
 /// (eq. 5; boundary particles after Akinci et al. 2012 with the wall pressure p_b of Adami et
-/// al. 2012, see boundary/wall_pressure_adami2012.hpp), the cubic spline kernel, Monaghan 2005
-/// physical viscosity, XSPH smoothing, and a CFL/force time step with c = SolverDef::soundSpeed.
+/// al. 2012, see boundary/wall_pressure_adami2012.hpp), the cubic spline kernel, physical
+/// viscosity (SolverDef::viscosity, Morris et al. 1997 by default), XSPH smoothing, and a
+/// CFL/force time step with c = SolverDef::soundSpeed.
 
 #include <vector>
 

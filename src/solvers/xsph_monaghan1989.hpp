@@ -13,6 +13,7 @@
 #include <tide/particles.hpp>
 
 #include "core/kernels.hpp"
+#include "core/periodic_box.hpp"
 #include "core/parallel.hpp"
 #include "neighbors/neighbor_list.hpp"
 
@@ -20,7 +21,8 @@ namespace tide {
 
 class XsphFilter {
 public:
-    void apply(ParticleStore& p, const NeighborList& neighbors, float supportRadius, float epsilon, int threads) {
+    void apply(ParticleStore& p, const NeighborList& neighbors, const PeriodicBox& box, float supportRadius, float epsilon,
+               int threads) {
         if (epsilon <= 0.0f) return;
         const kernels::Poly6 poly6(supportRadius);
         filtered_.resize(p.size());
@@ -29,7 +31,7 @@ public:
             const glm::vec3 vi = p.velocity[i];
             glm::vec3 sum(0.0f);
             for (const std::uint32_t j : neighbors.of(i)) {
-                const glm::vec3 d = xi - p.position[j];
+                const glm::vec3 d = box.delta(xi, p.position[j]);
                 const float weight = p.mass[j] / (0.5f * (p.density[i] + p.density[j])) * poly6.valueSq(glm::dot(d, d));
                 sum += weight * (p.velocity[j] - vi);
             }
