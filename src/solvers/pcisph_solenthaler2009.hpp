@@ -11,7 +11,7 @@
 /// SolverDef::maxDensityError after at least SolverDef::minIterations corrections. Boundaries
 /// are Akinci et al. 2012 particles (Ψ_b = ρ0_i V_b) with the wall pressure p_b of Adami et al.
 /// 2012 (boundary/wall_pressure_adami2012.hpp). δ is computed per particle
-/// and per step (the .cpp says why). Cubic spline kernel, Monaghan 2005 viscosity, CFL time
+/// and per step (the .cpp says why). Cubic spline kernel, SolverDef::viscosity (Morris 1997), CFL time
 /// step (no sound speed: the iteration, not the time step, keeps the fluid incompressible),
 /// halved and retaken when the solve fails (Ihmsen et al. 2010).
 /// No warm start of p (the paper starts from zero each step too; see dfsph for why).
