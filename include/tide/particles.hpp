@@ -25,6 +25,9 @@ public:
     std::vector<float> density;           ///< kg/m³
     std::vector<float> pressure;          ///< Pa
     std::vector<float> mass;              ///< kg
+    // Solver state carried from step to step (warm starts of the pressure solves):
+    std::vector<float> warmKappa;         ///< κ = p/ρ the last density solve ended with, m²/s²
+    std::vector<float> warmDivergence;    ///< κᵛΔt the last divergence solve ended with, m²/s
     std::vector<MaterialIndex> material;
     std::vector<std::uint32_t> id;        ///< stable identity, unchanged by reordering
 

@@ -25,7 +25,8 @@ namespace tide {
 
 class WallPressure {
 public:
-    /// Kernel sums of each boundary particle over the fluid near it, at the current positions.
+    /// Kernel sums of each boundary particle over the fluid near it, at the current positions
+    /// (the kernel values are kept: the solves call update() every iteration).
     void prepare(const BoundaryParticles& boundary, const NeighborList& fluidNear, std::span<const glm::vec3> fluid,
                  const PeriodicBox& box, const glm::vec3& gravity, float supportRadius, int threads) {
         const kernels::CubicSpline w(supportRadius);
@@ -33,12 +34,15 @@ public:
         weightSum_.assign(n, 0.0f);
         gravityTerm_.assign(n, 0.0f);
         kappa_.assign(n, 0.0f);
+        weights_.resize(fluidNear.pairCount());
         parallelFor(n, threads, [&](std::uint32_t b) {
             const glm::vec3 xb = boundary.position[b];
+            float* weight = weights_.data() + fluidNear.offset(b);
             float weights = 0.0f, lift = 0.0f;
             for (const std::uint32_t f : fluidNear.of(b)) {
                 const glm::vec3 xbf = box.delta(xb, fluid[f]);
                 const float wbf = w.value(glm::length(xbf));
+                *weight++ = wbf;
                 weights += wbf;
                 lift += glm::dot(gravity, xbf) * wbf;
             }
@@ -47,15 +51,13 @@ public:
         });
     }
 
-    /// κ_b from the fluid's κ_f; returns nothing, read with kappa().
-    void update(const NeighborList& fluidNear, std::span<const glm::vec3> fluid, std::span<const glm::vec3> boundary,
-                const PeriodicBox& box, std::span<const float> fluidKappa, float supportRadius, int threads) {
-        const kernels::CubicSpline w(supportRadius);
+    /// κ_b from the fluid's κ_f over the lists and positions prepare() saw; read with kappa().
+    void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads) {
         parallelFor(static_cast<std::uint32_t>(kappa_.size()), threads, [&](std::uint32_t b) {
             if (weightSum_[b] <= 0.0f) return;
+            const float* weight = weights_.data() + fluidNear.offset(b);
             float sum = gravityTerm_[b];
-            for (const std::uint32_t f : fluidNear.of(b))
-                sum += fluidKappa[f] * w.value(glm::length(box.delta(boundary[b], fluid[f])));
+            for (const std::uint32_t f : fluidNear.of(b)) sum += fluidKappa[f] * *weight++;
             kappa_[b] = std::max(sum / weightSum_[b], 0.0f);
         });
     }
@@ -67,6 +69,7 @@ private:
     std::vector<float> weightSum_;    ///< Σ_f W_bf
     std::vector<float> gravityTerm_;  ///< g·Σ_f (x_b − x_f) W_bf, m²/s²
     std::vector<float> kappa_;        ///< κ_b = p_b/ρ, m²/s²
+    std::vector<float> weights_;      ///< W_bf per pair of the fluid-near list
 };
 
 }  // namespace tide

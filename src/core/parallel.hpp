@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <vector>
 
 #include <omp.h>
 
@@ -37,6 +38,27 @@ float parallelMax(std::uint32_t n, int threads, F&& f, float init = -std::numeri
     for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i)
         result = std::max(result, static_cast<float>(f(static_cast<std::uint32_t>(i))));
     return result;
+}
+
+/// Σ f(i) over i in [0, n), in double. The same for any thread count: fixed blocks of
+/// indices are summed in order, then the blocks' sums in order.
+template <class F>
+double parallelSum(std::uint32_t n, int threads, F&& f) {
+    constexpr std::uint32_t kBlock = 4096;
+    const std::uint32_t blocks = (n + kBlock - 1) / kBlock;
+    std::vector<double> partial(blocks, 0.0);
+    const bool parallel = threads > 1 && blocks > 1;
+#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
+    for (std::int64_t b = 0; b < static_cast<std::int64_t>(blocks); ++b) {
+        const auto first = static_cast<std::uint32_t>(b) * kBlock;
+        const std::uint32_t last = std::min(n, first + kBlock);
+        double sum = 0.0;
+        for (std::uint32_t i = first; i < last; ++i) sum += f(i);
+        partial[static_cast<std::size_t>(b)] = sum;
+    }
+    double total = 0.0;
+    for (const double s : partial) total += s;
+    return total;
 }
 
 }  // namespace tide

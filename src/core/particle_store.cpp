@@ -11,6 +11,8 @@ void ParticleStore::reserve(std::uint32_t n) {
     density.reserve(n);
     pressure.reserve(n);
     mass.reserve(n);
+    warmKappa.reserve(n);
+    warmDivergence.reserve(n);
     material.reserve(n);
     id.reserve(n);
 }
@@ -22,6 +24,8 @@ void ParticleStore::append(const glm::vec3& x, const glm::vec3& v, float m, Mate
     density.push_back(rho0);
     pressure.push_back(0.0f);
     mass.push_back(m);
+    warmKappa.push_back(0.0f);
+    warmDivergence.push_back(0.0f);
     material.push_back(mat);
     id.push_back(nextId_++);
 }
@@ -48,6 +52,8 @@ void ParticleStore::permute(std::span<const std::uint32_t> order) {
         permuteArray(density, order, scratch);
         permuteArray(pressure, order, scratch);
         permuteArray(mass, order, scratch);
+        permuteArray(warmKappa, order, scratch);
+        permuteArray(warmDivergence, order, scratch);
     }
     std::vector<MaterialIndex> materialScratch;
     permuteArray(material, order, materialScratch);
@@ -62,6 +68,8 @@ void ParticleStore::clear() {
     density.clear();
     pressure.clear();
     mass.clear();
+    warmKappa.clear();
+    warmDivergence.clear();
     material.clear();
     id.clear();
     nextId_ = 0;

@@ -70,4 +70,24 @@ struct PeriodicBox {
     }
 };
 
+/// The pair vector x_a − x_b as a function object, with the periodic shift compiled in or
+/// out: pair loops written once as `withPairVector(box, [&](auto delta) { … })` get a plain
+/// subtraction when no axis is periodic, with nothing in the loop to keep them from being
+/// optimised as such.
+template <bool Periodic>
+struct PairVector {
+    const PeriodicBox* box;
+    [[nodiscard]] glm::vec3 operator()(const glm::vec3& a, const glm::vec3& b) const {
+        if constexpr (Periodic) return box->nearestImage(a - b);
+        else return a - b;
+    }
+};
+
+template <class F>
+decltype(auto) withPairVector(const PeriodicBox& box, F&& f) {
+    if (box.any) return f(PairVector<true>{&box});
+    return f(PairVector<false>{&box});
+}
+
 }  // namespace tide
+

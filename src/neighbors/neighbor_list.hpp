@@ -32,6 +32,9 @@ public:
     [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const {
         return {indices_.data() + begin_[i], count_[i]};
     }
+    /// Position of i's first neighbour in the list's pair order: per-pair data computed
+    /// alongside the list (e.g. kernel factors) is indexed by offset(i) + k.
+    [[nodiscard]] std::uint64_t offset(std::uint32_t i) const { return begin_[i]; }
     [[nodiscard]] std::uint32_t particleCount() const { return static_cast<std::uint32_t>(count_.size()); }
     [[nodiscard]] std::uint64_t pairCount() const { return indices_.size(); }
 

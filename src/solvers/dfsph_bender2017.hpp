@@ -18,7 +18,11 @@
 
 #include <vector>
 
+#include <glm/vec4.hpp>
+
 #include "boundary/wall_pressure_adami2012.hpp"
+#include "core/kernels.hpp"
+#include "solvers/pair_kernels.hpp"
 #include "solvers/solver.hpp"
 #include "solvers/xsph_monaghan1989.hpp"
 
@@ -31,13 +35,25 @@ public:
     double step(StepContext& ctx) override;
 
 private:
+    /// Kernel factors of this step's pairs and the packed positions the iterations read.
+    void prepare(StepContext& ctx);
     void computeAlpha(StepContext& ctx);
+    /// Σ_j m_j (v_i − v_j)·∇W_ij + Σ_b Ψ_b v_i·∇W_ib: the rate of change of ρ_i (walls at rest).
+    template <class PairVector>
+    [[nodiscard]] float densityRate(const StepContext& ctx, PairVector delta, std::uint32_t i) const;
+    /// ρ*_i: the density at the positions predicted_ holds (x + Δt v), over this step's
+    /// neighbours. The paper linearises it, ρ_i + Δt Dρ_i/Dt (eq. 9); the kernel is convex where
+    /// neighbours close in, so the linear guess misses up to 90 % of the tolerance at CFL 0.4
+    /// in a dam break (measured).
+    template <class PairVector>
+    [[nodiscard]] float predictedDensity(const StepContext& ctx, PairVector delta, const kernels::CubicSpline& w,
+                                         std::uint32_t i) const;
     /// Makes the velocity field divergence-free; returns iterations.
     int solveDivergence(StepContext& ctx);
     /// Corrects the predicted velocities so the next positions have rest density; returns iterations.
     int solveDensity(StepContext& ctx, float dt);
-    /// Mean over particles of source_[i] / ρ0_i: the solves' convergence measure (serial, so
-    /// it does not depend on the thread count).
+    /// Mean over particles of source_[i] / ρ0_i: the solves' convergence measure (a
+    /// parallelSum, so it does not depend on the thread count).
     [[nodiscard]] double meanRelativeSource(const StepContext& ctx) const;
     /// v_i −= Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij + Σ_b Ψ_b ((k_i + k_b)/ρ_i) ∇W_ib for the
     /// current k_; boundary particles take `boundaryK`, or mirror k_i when it is empty.
@@ -52,6 +68,15 @@ private:
     std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
     std::vector<float> boundaryKappa_; ///< κ_b applied so far this step
     WallPressure wall_;
+    PairKernels fluidF_;                     ///< W'(r)/r per fluid pair
+    PairKernels wallF_;                      ///< W'(r)/r per fluid–boundary pair
+    std::vector<glm::vec3> fluidGradient_;   ///< Σ_j m_j ∇W_ij
+    std::vector<glm::vec3> wallGradient_;    ///< Σ_b V_b ∇W_ib
+    std::vector<glm::vec4> positionMass_;    ///< (x_j, m_j)
+    std::vector<glm::vec4> positionK_;       ///< (x_j, m_j k_j/ρ_j) of one iteration
+    std::vector<glm::vec4> predicted_;       ///< (x_j + Δt v_j, m_j) of one iteration
+    std::vector<glm::vec4> wallPositionVolume_;  ///< (x_b, V_b)
+    std::vector<glm::vec4> wallPositionK_;   ///< (x_b, V_b k_b) of one iteration
     std::vector<glm::vec3> accel_;
     XsphFilter xsph_;
     double lastDt_ = 1e-3;             ///< s; the divergence solve runs before this step's dt is known

@@ -108,8 +108,7 @@ void PcisphSolenthaler2009::computePressureAccel(StepContext& ctx) {
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         kappa_[i] = pressure_[i] / ctx.materials[p.material[i]].restDensity;
     });
-    wall_.update(ctx.boundaryFluidNeighbors, p.position, ctx.boundary.position, ctx.periodic, kappa_, ctx.supportRadius,
-                 ctx.threads);
+    wall_.update(ctx.boundaryFluidNeighbors, kappa_, ctx.threads);
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         const float rho0 = ctx.materials[p.material[i]].restDensity;

@@ -24,8 +24,7 @@ double WcsphBecker2007::step(StepContext& ctx) {
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { kappa_[i] = p.pressure[i] / p.density[i]; });
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
                   ctx.supportRadius, ctx.threads);
-    wall_.update(ctx.boundaryFluidNeighbors, p.position, ctx.boundary.position, ctx.periodic,
-                 kappa_, ctx.supportRadius, ctx.threads);
+    wall_.update(ctx.boundaryFluidNeighbors, kappa_, ctx.threads);
     const auto wallKappa = wall_.kappa();
     const kernels::CubicSpline w(ctx.supportRadius);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
