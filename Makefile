@@ -24,8 +24,12 @@ demo: build
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
+# Kernels (Google Benchmark), then whole simulations (BENCH_SECONDS simulated each; the
+# SPlisHSPlasH comparison in docs/performance.md uses 1).
+BENCH_SECONDS ?= 0.1
 bench: build
 	@$(BUILD_DIR)/bin/tide_bench --benchmark_counters_tabular=true
+	@$(BUILD_DIR)/bin/tide_scenarios --seconds $(BENCH_SECONDS)
 
 clean:
 	@rm -rf $(BUILD_DIR)

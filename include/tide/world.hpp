@@ -20,6 +20,16 @@ enum class AddStatus {
     OverCapacity,    ///< the block would exceed WorldDef::capacity
 };
 
+/// Wall-clock seconds spent in each phase of the steps, summed since creation (the
+/// benchmark's split of the cost of a particle-step).
+struct PhaseSeconds {
+    double neighborSearch = 0.0;     ///< grid, neighbour lists, reordering
+    double density = 0.0;            ///< densities and the solver's per-step factors
+    double pressureSolve = 0.0;      ///< pressure forces, or the iterations of an implicit solve
+    double nonPressureForces = 0.0;  ///< gravity, viscosity, XSPH
+    double integration = 0.0;        ///< time step, positions, walls and obstacles, emitters, statistics
+};
+
 /// Figures of the last step and running totals.
 struct WorldStats {
     std::uint64_t steps = 0;            ///< time steps taken since creation
@@ -35,7 +45,9 @@ struct WorldStats {
     double dtMax = 0.0;                 ///< s, longest step
     double dtSum = 0.0;                 ///< s, simulated time stepped
     float maxMeanDensityError = 0.0f;   ///< largest per-step meanDensityError
+    float maxMeanCompression = 0.0f;    ///< largest per-step meanCompression
     double sumMeanDensityError = 0.0;   ///< Σ over steps of meanDensityError (÷ steps = average)
+    PhaseSeconds phaseSeconds;          ///< where the steps' wall time went
 };
 
 /// Names of the solvers World accepts in SolverDef::method.

@@ -219,6 +219,7 @@ struct World::Impl {
         stats.meanCompression = static_cast<float>(compressionSum / n);
         stats.maxSpeed = static_cast<float>(std::sqrt(maxSpeed2));
         stats.maxMeanDensityError = std::max(stats.maxMeanDensityError, stats.meanDensityError);
+        stats.maxMeanCompression = std::max(stats.maxMeanCompression, stats.meanCompression);
         stats.sumMeanDensityError += stats.meanDensityError;
     }
 };
@@ -366,11 +367,14 @@ double World::step(double maxDt) {
     if (!(maxDt > 0.0))
         throw std::invalid_argument("maxDt: must be > 0, got " + std::to_string(maxDt));
     Impl& w = *impl_;
+    PhaseClock clock(w.stats.phaseSeconds);
     w.resolveSoundSpeed();
     w.rebuildNeighbors();
+    clock.lap(Phase::NeighborSearch);
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
                     w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.boundaryFluidNeighbors,
                     w.periodic, w.viscosity, w.threads, maxDt};
+    ctx.clock = &clock;
     const double dt = w.solver->step(ctx);
     w.stats.lastPressureIterations = ctx.pressureIterations;
     w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);
@@ -395,6 +399,7 @@ double World::step(double maxDt) {
     w.updateStats(dt);
     w.emit(w.time, dt);
     w.time += dt;
+    clock.lap(Phase::Integration);
     return dt;
 }
 

@@ -85,7 +85,9 @@ void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
 double ClassicMuller2003::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     computeDensityAndPressure(ctx);
-    computeAccelerations(ctx);
+    ctx.lap(Phase::Density);
+    computeAccelerations(ctx);  // pressure and viscosity in one pass
+    ctx.lap(Phase::PressureSolve);
 
     const auto n = p.size();
     const float maxSpeed2 = parallelMax(n, ctx.threads, [&](std::uint32_t i) {
@@ -99,8 +101,10 @@ double ClassicMuller2003::step(StepContext& ctx) {
 
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
+    ctx.lap(Phase::Integration);
     xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
                 ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.25f, ctx.threads);
+    ctx.lap(Phase::NonPressureForces);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     return dt;
 }

@@ -265,10 +265,13 @@ double DfsphBender2017::step(StepContext& ctx) {
     wallPositionK_.resize(ctx.boundary.position.size());
     predicted_.resize(n);
     computeAlpha(ctx);
+    ctx.lap(Phase::Density);
     divergenceK_.assign(n, 0.0f);
     const int divergenceIterations = solveDivergence(ctx);
+    ctx.lap(Phase::PressureSolve);
 
     sph::addGravityAndViscosity(ctx, accel_);
+    ctx.lap(Phase::NonPressureForces);
     const float nu = sph::maxKinematicViscosity(ctx);
     SolverDef limits = ctx.solver;
     // Explicit viscosity's limit, but never below the user's floor min_dt.
@@ -281,9 +284,12 @@ double DfsphBender2017::step(StepContext& ctx) {
         p.velocity[i] += dtf * accel_[i];
     });
     // XSPH is a non-pressure force too: smoothing after the density solve would undo part of it.
+    ctx.lap(Phase::Integration);
     xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
                 ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+    ctx.lap(Phase::NonPressureForces);
     const int densityIterations = solveDensity(ctx, dtf);
+    ctx.lap(Phase::PressureSolve);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         p.position[i] += dtf * p.velocity[i];
         p.warmKappa[i] = kappa_[i];

@@ -163,7 +163,9 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
     sph::computeDensities(ctx);
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity, ctx.supportRadius,
                   ctx.threads);
+    ctx.lap(Phase::Density);
     sph::addGravityAndViscosity(ctx, accel_);
+    ctx.lap(Phase::NonPressureForces);
     const float nu = sph::maxKinematicViscosity(ctx);
     SolverDef limits = ctx.solver;
     if (nu > 0.0f)
@@ -190,6 +192,7 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
         dtCap_ = 0.5 * dt;
     }
     dtCap_ = solve.converged ? std::min(1.25 * dtCap_, static_cast<double>(limits.maxDt)) : dtCap_;
+    ctx.lap(Phase::PressureSolve);
     const auto dtf = static_cast<float>(dt);
 
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -197,8 +200,10 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
         p.velocity[i] += dtf * p.acceleration[i];
         p.pressure[i] = pressure_[i];
     });
+    ctx.lap(Phase::Integration);
     xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f,
                 ctx.threads);
+    ctx.lap(Phase::NonPressureForces);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     ctx.pressureIterations = iterations;
     return dt;

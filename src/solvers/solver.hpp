@@ -14,6 +14,7 @@
 #include <tide/particles.hpp>
 
 #include "boundary/boundary_particles.hpp"
+#include "core/phase_clock.hpp"
 #include "core/periodic_box.hpp"
 #include "neighbors/neighbor_list.hpp"
 #include "solvers/viscosity.hpp"
@@ -38,10 +39,15 @@ struct StepContext {
     int threads;
     double maxDt;            ///< the step may not be longer (e.g. to land on a frame time)
     int pressureIterations = 0;  ///< out: iterations the pressure solve took this step
+    PhaseClock* clock = nullptr;  ///< where a solver books the phases of its step (may be null)
 
     /// x_a − x_b to the nearest periodic image: every pair vector of a solver, fluid–fluid
     /// and fluid–boundary, goes through this (the plain difference without periodic axes).
     [[nodiscard]] glm::vec3 delta(const glm::vec3& a, const glm::vec3& b) const { return periodic.delta(a, b); }
+    /// Books the time since the last lap to `phase`.
+    void lap(Phase phase) const {
+        if (clock) clock->lap(phase);
+    }
 };
 
 /// The kernel a solver computes density with: particle masses are calibrated with it.

@@ -18,7 +18,9 @@ double WcsphBecker2007::step(StepContext& ctx) {
         p.pressure[i] = pressureFromDensity(EquationOfState::Tait, p.density[i], ctx.materials[p.material[i]].restDensity,
                                             ctx.soundSpeed, true);
     });
+    ctx.lap(Phase::Density);
     sph::addGravityAndViscosity(ctx, accel_);
+    ctx.lap(Phase::NonPressureForces);
     // Walls take the pressure of the fluid around them, extrapolated hydrostatically.
     kappa_.resize(n);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { kappa_[i] = p.pressure[i] / p.density[i]; });
@@ -43,6 +45,7 @@ double WcsphBecker2007::step(StepContext& ctx) {
         }
         p.acceleration[i] = accel_[i] - sum;
     });
+    ctx.lap(Phase::PressureSolve);
     const float maxAccel = std::sqrt(parallelMax(n, ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.acceleration[i], p.acceleration[i]);
     }, 0.0f));
@@ -51,8 +54,10 @@ double WcsphBecker2007::step(StepContext& ctx) {
                                      ctx.maxDt);
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
+    ctx.lap(Phase::Integration);
     xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
                 ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+    ctx.lap(Phase::NonPressureForces);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     return dt;
 }
