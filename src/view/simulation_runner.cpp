@@ -52,9 +52,10 @@ void SimulationRunner::publish() {
     workerStatus_.playing = playing_;
     workerStatus_.speed = speed_;
     workerStatus_.emitters = emitters_;
+    // The three buffers rotate, so their own counters do not order them: number them here,
+    // so the renderer uploads each new state once.
+    back_.version = ++published_;
     std::lock_guard lock(mutex_);
-    // Versions must keep growing across the swaps so the renderer re-uploads each new state.
-    back_.version = std::max(back_.version, middle_.version + 1);
     std::swap(back_, middle_);
     status_ = workerStatus_;
     fresh_ = true;

@@ -66,6 +66,7 @@ private:
     double speed_;
     bool emitters_ = true;
     render::Snapshot back_;
+    std::uint64_t published_ = 0;
     RunnerStatus workerStatus_;
     // Shared, under mutex_.
     std::mutex mutex_;
