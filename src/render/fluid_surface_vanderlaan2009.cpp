@@ -36,10 +36,11 @@ void FluidSurfaceVanDerLaan2009::resize(int width, int height) {
     distanceA_.allocate(width, height, GL_R32F, GL_RED, GL_FLOAT);
     distanceB_.allocate(width, height, GL_R32F, GL_RED, GL_FLOAT);
     thicknessFoam_.allocate(width, height, GL_RG16F, GL_RG, GL_FLOAT);
+    colourSum_.allocate(width, height, GL_RGBA16F, GL_RGBA, GL_FLOAT);
     depthTarget_.attach({&distanceA_}, width, height);
     smoothToB_.attach({&distanceB_});
     smoothToA_.attach({&distanceA_});
-    thicknessTarget_.attach({&thicknessFoam_});
+    thicknessTarget_.attach({&thicknessFoam_, &colourSum_});
 }
 
 void FluidSurfaceVanDerLaan2009::draw(const Frame& frame, const gl::Texture& background, GLuint target,
@@ -58,7 +59,7 @@ void FluidSurfaceVanDerLaan2009::draw(const Frame& frame, const gl::Texture& bac
     depth_.use();
     frame.drawSpheres(depth_);
 
-    // 2. Thickness and foam, summed over every sphere along the ray.
+    // 2. Thickness, foam and colour, summed over every sphere along the ray.
     thicknessTarget_.bind();
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_DEPTH_TEST);
@@ -95,27 +96,21 @@ void FluidSurfaceVanDerLaan2009::draw(const Frame& frame, const gl::Texture& bac
     distanceA_.bind(0);
     thicknessFoam_.bind(1);
     background.bind(2);
+    colourSum_.bind(3);
     composite_.set("uDistance", 0);
     composite_.set("uThicknessFoam", 1);
     composite_.set("uBackground", 2);
+    composite_.set("uColourSum", 3);
+    composite_.set("uFoam", foam ? 1.0f : 0.0f);
     composite_.set("uProjection", frame.projection);
     composite_.set("uInverseView", glm::inverse(frame.view));
     composite_.set("uTexel", glm::vec2(1.0f / static_cast<float>(frame.width), 1.0f / static_cast<float>(frame.height)));
     composite_.set("uSunDirection", frame.sunDirection);
-    // Absorption per metre, red strongest as in real water, scaled up for small tanks so
-    // that a tank's worth of water reads as water and not as glass (0.5 m → ~e^-3 in red).
+    // Absorption scaled up for small tanks, so that a tank's worth of water reads as water
+    // and not as glass: through 0.2 of the container's diagonal, red falls to ~e^-1.5.
     const float tank = std::max(frame.extent, 0.05f);
-    composite_.set("uAbsorption", glm::vec3(6.0f, 2.2f, 1.4f) / tank);
-    composite_.set("uDeepColor", glm::vec3(0.02f, 0.16f, 0.26f));
+    composite_.set("uAbsorption", 10.0f / tank);
     composite_.set("uRefraction", 0.35f / tank);
-    if (!foam) {
-        // Foam lives in the thickness texture's second channel: clear it.
-        thicknessTarget_.bind();
-        glColorMask(GL_FALSE, GL_TRUE, GL_FALSE, GL_FALSE);
-        glClear(GL_COLOR_BUFFER_BIT);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        glBindFramebuffer(GL_FRAMEBUFFER, target);
-    }
     glDisable(GL_DEPTH_TEST);
     gl::drawFullscreenTriangle(frame.emptyVertexArray);
 }

@@ -23,7 +23,7 @@ private:
     gl::Program thickness_;
     gl::Program smooth_;
     gl::Program composite_;
-    gl::Texture distanceA_, distanceB_, thicknessFoam_;
+    gl::Texture distanceA_, distanceB_, thicknessFoam_, colourSum_;
     gl::Framebuffer depthTarget_, smoothToB_, smoothToA_, thicknessTarget_;
     int width_ = 0;
     int height_ = 0;

@@ -175,13 +175,17 @@ void main() {
 )";
 
 /// Surface mode, pass 2 (§3.4): fluid thickness along each ray, added up over all spheres
-/// with additive blending; and foam, added up the same way.
+/// with additive blending; and foam and the materials' colours (weighted by thickness),
+/// added up the same way, so mixed liquids tint the surface by how much of each is seen.
 inline constexpr const char* kThicknessFragment = R"(
 uniform float uThicknessScale;  // sphere volume → particle volume, so sums give metres of fluid
-out vec2 fragThicknessFoam;
+layout(location = 0) out vec2 fragThicknessFoam;
+layout(location = 1) out vec4 fragColourSum;
 void main() {
     vec3 n = sphereNormal();
-    fragThicknessFoam = vec2(2.0 * uRadius * n.z * uThicknessScale, vFoam * n.z * 0.2);
+    float chord = 2.0 * uRadius * n.z * uThicknessScale;
+    fragThicknessFoam = vec2(chord, vFoam * n.z * 0.2);
+    fragColourSum = vec4(vColor * chord, chord);
 }
 )";
 
@@ -233,9 +237,10 @@ uniform sampler2D uBackground;
 uniform mat4 uProjection;
 uniform mat4 uInverseView;
 uniform vec2 uTexel;
-uniform vec3 uAbsorption;     // per metre, r g b
-uniform vec3 uDeepColor;      // the colour of light scattered back from deep water
+uniform sampler2D uColourSum;
+uniform float uAbsorption;    // per metre, of the colours a liquid does not have
 uniform float uRefraction;    // background offset, uv per metre of thickness
+uniform float uFoam;          // 1: whitecaps on, 0: off
 out vec4 fragColor;
 vec3 eyePoint(vec2 uv, float d) {
     vec2 ndc = uv * 2.0 - 1.0;
@@ -276,13 +281,19 @@ void main() {
     float thickness = thicknessFoam.r;
     vec2 offset = n.xy * min(thickness * uRefraction, 0.04);
     vec3 behind = texture(uBackground, clamp(uv - offset, vec2(0.0), vec2(1.0))).rgb;
-    vec3 transmitted = exp(-uAbsorption * thickness);
-    vec3 refracted = behind * transmitted + uDeepColor * (1.0 - transmitted);
+    // A liquid of colour c absorbs what it lacks (Beer–Lambert, per channel): water's default
+    // blue absorbs red most, as real water does. Deep liquid shows its own colour, darkened.
+    vec4 colourSum = texture(uColourSum, uv);
+    vec3 tint = colourSum.a > 0.0 ? colourSum.rgb / colourSum.a : vec3(0.2, 0.45, 0.9);
+    vec3 lacking = vec3(1.0) - tint;
+    vec3 transmitted = exp(-uAbsorption * (lacking * lacking + 0.04) * thickness);
+    vec3 deep = tint * 0.3;
+    vec3 refracted = behind * transmitted + deep * (1.0 - transmitted);
 
     vec3 color = mix(refracted, reflected, fresnel);
     vec3 h = normalize(uSunDirection + vWorld);
     color += vec3(1.0, 0.96, 0.88) * pow(max(dot(nWorld, h), 0.0), 350.0) * 1.5;
-    color = mix(color, vec3(0.93, 0.95, 0.97), clamp(thicknessFoam.g, 0.0, 0.85));
+    color = mix(color, vec3(0.93, 0.95, 0.97), clamp(thicknessFoam.g * uFoam, 0.0, 0.85));
     fragColor = vec4(color, 1.0);
 }
 )";

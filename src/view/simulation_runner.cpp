@@ -114,9 +114,12 @@ void SimulationRunner::work() {
             budget = playing_ ? std::min(budget + speed_ * seconds(now - last), 0.05 * std::max(speed_, 1.0)) : 0.0;
             last = now;
             if (stepOnce_ || (playing_ && budget > 0.0)) {
+                // One advance may be many solver steps (a Fluid frame): count the World's.
+                const std::uint64_t before = source_->world().stats().steps;
                 budget -= source_->advance();
-                particleSteps += source_->world().particles().size();
-                ++steps;
+                const std::uint64_t taken = source_->world().stats().steps - before;
+                particleSteps += taken * source_->world().particles().size();
+                steps += taken;
                 stepOnce_ = false;
                 changed = true;
             } else if (playing_) {
