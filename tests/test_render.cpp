@@ -4,7 +4,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -207,6 +209,31 @@ TEST(RenderCli, ParticleModeShowsEachMaterialsColour) {
     EXPECT_GT(share(image, hitsRight, green, n), 0.85) << n << " pixels";
     EXPECT_GT(n, 500);
     EXPECT_LT(share(image, hitsLeft, green, n), 0.02);
+}
+
+TEST(RenderCli, ObstaclesAreDrawnAndHideTheWaterBehindThem) {
+    // Water at the back of the tank, a box obstacle in front of it (between it and the camera).
+    std::string text = tankScene(R"([{"name": "water", "density": 1000}])",
+                                 R"([{"min": [0, 0, 0], "max": [0.4, 0.14, 0.1]}])");
+    text.insert(text.rfind('}'), R"(, "obstacles": [{"type": "box", "min": [0.12, 0, 0.16], "max": [0.28, 0.2, 0.24]}])");
+    const fs::path scene = writeScene("obstacle", text);
+    const fs::path out = scratch("obstacle_out");
+    const Result r = run(kTide + " render " + scene.string() + " --out " + out.string() +
+                         " --width 256 --height 192 --threads 1 --quiet --mode surface");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    const Image image = readPng(out / "frame_00000.png");
+    ASSERT_EQ(image.width, 256);
+    const glm::vec3 obstacleMin(0.12f, 0.0f, 0.16f), obstacleMax(0.28f, 0.2f, 0.24f), margin(0.005f);
+    const auto grey = [](const glm::vec3& c) {
+        return std::abs(c.r - c.g) < 25.0f && std::abs(c.g - c.b) < 25.0f && c.r > 30.0f && c.r < 200.0f;
+    };
+    int n = 0;
+    const auto hitsObstacle = [&](const glm::vec3& d) {
+        return rayHitsBox(kCamera.eye, d, obstacleMin + margin, obstacleMax - margin) > 0.0f;
+    };
+    EXPECT_GT(share(image, hitsObstacle, grey, n), 0.95) << n << " pixels";
+    EXPECT_GT(n, 500);
+    EXPECT_LT(share(image, hitsObstacle, waterLike, n), 0.02) << "water drawn over the obstacle in front of it";
 }
 
 TEST(RenderCli, RefusesBadSizesNamingTheFlagAndValue) {

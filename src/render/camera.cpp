@@ -26,9 +26,10 @@ Camera defaultCamera(const glm::vec3& min, const glm::vec3& max) {
     const glm::vec3 centre = 0.5f * (min + max);
     const float radius = 0.5f * glm::length(max - min);
     // A 3/4 view: from the front-right corner, 30° above the horizon, far enough that the
-    // bounding sphere fits the vertical field of view with a margin.
+    // bounding sphere nearly fits the vertical field of view (a box seen from a corner
+    // covers less than its bounding sphere).
     const glm::vec3 direction = glm::normalize(glm::vec3(0.55f, 0.6f, 1.0f));
-    const float distance = 1.1f * radius / std::sin(glm::radians(0.5f * c.fovDegrees));
+    const float distance = 0.85f * radius / std::sin(glm::radians(0.5f * c.fovDegrees));
     c.target = centre - glm::vec3(0.0f, 0.1f * (max.y - min.y), 0.0f);
     c.eye = c.target + direction * distance;
     return fitClipPlanes(c, min, max);

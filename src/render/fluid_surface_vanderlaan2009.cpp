@@ -56,6 +56,12 @@ void FluidSurfaceVanDerLaan2009::draw(const Frame& frame, const gl::Texture& bac
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
+    // Obstacles first, depth only: fluid behind them is then not part of the surface.
+    if (frame.drawOccluders) {
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        frame.drawOccluders();
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
     depth_.use();
     frame.drawSpheres(depth_);
 

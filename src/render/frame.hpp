@@ -21,6 +21,8 @@ struct Frame {
     GLuint emptyVertexArray = 0;
     /// Sets the sphere-vertex uniforms on a program that is in use, and draws every particle.
     std::function<void(const gl::Program&)> drawSpheres;
+    /// Draws the solids that can hide fluid (obstacles) into the bound depth buffer only.
+    std::function<void()> drawOccluders;
 };
 
 }  // namespace tide::render

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <string>
 
@@ -13,6 +14,7 @@
 #include "fluid_surface_vanderlaan2009.hpp"
 #include "frame.hpp"
 #include "gl.hpp"
+#include "obstacle_mesh.hpp"
 #include "shaders.hpp"
 
 namespace tide::render {
@@ -59,6 +61,7 @@ struct Renderer::Impl {
     gl::Program lines{"container", source({shaders::kLinesVertex}).c_str(), source({shaders::kLinesFragment}).c_str()};
     gl::Program particles{"particles", source({shaders::kColormap, shaders::kSphereVertex}).c_str(),
                           source({shaders::kSphereFragmentCommon, shaders::kParticleFragment}).c_str()};
+    gl::Program solids{"obstacles", source({shaders::kSolidVertex}).c_str(), source({shaders::kSolidFragment}).c_str()};
     FluidSurfaceVanDerLaan2009 surface;
 
     GLuint emptyVertexArray = 0;
@@ -66,6 +69,9 @@ struct Renderer::Impl {
     GLuint buffers[5] = {};  // position, velocity, density, pressure, material
     GLuint boxArray = 0;
     GLuint boxBuffer = 0;
+    GLuint solidArray = 0;
+    GLuint solidBuffer = 0;
+    GLsizei solidVertices = 0;
     std::uint64_t uploadedVersion = std::numeric_limits<std::uint64_t>::max();
     const Snapshot* uploadedFrom = nullptr;
     GLsizei count = 0;
@@ -97,10 +103,21 @@ struct Renderer::Impl {
         glBindBuffer(GL_ARRAY_BUFFER, boxBuffer);
         glEnableVertexAttribArray(0);
         glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+        glGenVertexArrays(1, &solidArray);
+        glGenBuffers(1, &solidBuffer);
+        glBindVertexArray(solidArray);
+        glBindBuffer(GL_ARRAY_BUFFER, solidBuffer);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(SolidVertex), nullptr);
+        glEnableVertexAttribArray(1);
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(SolidVertex),
+                              reinterpret_cast<const void*>(offsetof(SolidVertex, normal)));
         glBindVertexArray(0);
     }
 
     ~Impl() {
+        glDeleteBuffers(1, &solidBuffer);
+        glDeleteVertexArrays(1, &solidArray);
         glDeleteBuffers(5, buffers);
         glDeleteBuffers(1, &boxBuffer);
         glDeleteVertexArrays(1, &particleArray);
@@ -126,6 +143,10 @@ struct Renderer::Impl {
         std::vector<glm::vec3> vertices;
         for (int e : edges) vertices.push_back(corners[e]);
         upload(boxBuffer, vertices);
+        // Obstacles are fixed, but cheap to tessellate again with each new state.
+        const std::vector<SolidVertex> solid = tessellate(s.obstacles, 2.0f * glm::length(hi - lo));
+        upload(solidBuffer, solid);
+        solidVertices = static_cast<GLsizei>(solid.size());
     }
 
     glm::vec2 autoRange(const Snapshot& s, ColorBy by) const {
@@ -161,6 +182,7 @@ struct Renderer::Impl {
         background.set("uSunDirection", f.sunDirection);
         gl::drawFullscreenTriangle(emptyVertexArray);
         glDepthFunc(GL_LESS);
+        drawSolids(f);
         if (container) {
             lines.use();
             lines.set("uViewProjection", viewProjection);
@@ -168,6 +190,15 @@ struct Renderer::Impl {
             glBindVertexArray(boxArray);
             glDrawArrays(GL_LINES, 0, 24);
         }
+    }
+
+    void drawSolids(const Frame& f) {
+        if (solidVertices == 0) return;
+        solids.use();
+        solids.set("uViewProjection", f.projection * f.view);
+        solids.set("uSunDirection", f.sunDirection);
+        glBindVertexArray(solidArray);
+        glDrawArrays(GL_TRIANGLES, 0, solidVertices);
     }
 
     void setSphereUniforms(const gl::Program& p, const Frame& f, const Snapshot& s, const RenderSettings& r) const {
@@ -225,6 +256,7 @@ void Renderer::draw(const Snapshot& snapshot, const Camera& camera, const Render
     f.sunDirection = glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f));
     f.emptyVertexArray = d.emptyVertexArray;
     f.drawSpheres = [&](const gl::Program& p) { d.setSphereUniforms(p, f, snapshot, settings); };
+    f.drawOccluders = [&] { d.drawSolids(f); };
 
     glEnable(GL_PROGRAM_POINT_SIZE);
     glDisable(GL_BLEND);

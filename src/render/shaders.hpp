@@ -73,6 +73,28 @@ out vec4 fragColor;
 void main() { fragColor = vec4(uColor, 1.0); }
 )";
 
+/// Obstacles: lit, stone-grey solids.
+inline constexpr const char* kSolidVertex = R"(
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+uniform mat4 uViewProjection;
+out vec3 vNormal;
+void main() {
+    vNormal = aNormal;
+    gl_Position = uViewProjection * vec4(aPosition, 1.0);
+}
+)";
+inline constexpr const char* kSolidFragment = R"(
+uniform vec3 uSunDirection;
+in vec3 vNormal;
+out vec4 fragColor;
+void main() {
+    vec3 n = normalize(vNormal);
+    float light = 0.35 + 0.65 * max(dot(n, uSunDirection), 0.0) + 0.1 * n.y;
+    fragColor = vec4(vec3(0.52, 0.5, 0.47) * light, 1.0);
+}
+)";
+
 /// Five stops of a perceptual colour map (viridis), interpolated linearly.
 inline constexpr const char* kColormap = R"(
 uniform vec3 uColormap[5];

@@ -12,6 +12,7 @@ void takeSnapshot(const World& world, Snapshot& out) {
     out.material.assign(p.material.begin(), p.material.end());
     out.materials.clear();
     for (const MaterialDef& m : world.materials()) out.materials.push_back({m.name, m.color, m.restDensity});
+    out.obstacles = world.obstacles();
     out.domainMin = world.def().domainMin;
     out.domainMax = world.def().domainMax;
     out.particleSpacing = world.def().particleSpacing;
