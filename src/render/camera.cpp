@@ -23,15 +23,25 @@ Camera fitClipPlanes(Camera camera, const glm::vec3& min, const glm::vec3& max) 
 
 Camera defaultCamera(const glm::vec3& min, const glm::vec3& max) {
     Camera c;
-    const glm::vec3 centre = 0.5f * (min + max);
-    const float radius = 0.5f * glm::length(max - min);
-    // A 3/4 view: from the front-right corner, 30° above the horizon, far enough that the
-    // bounding sphere nearly fits the vertical field of view (a box seen from a corner
-    // covers less than its bounding sphere).
-    const glm::vec3 direction = glm::normalize(glm::vec3(0.55f, 0.6f, 1.0f));
-    const float distance = 0.85f * radius / std::sin(glm::radians(0.5f * c.fovDegrees));
-    c.target = centre - glm::vec3(0.0f, 0.1f * (max.y - min.y), 0.0f);
-    c.eye = c.target + direction * distance;
+    // A 3/4 view: from the front-right corner, about 30° above the horizon, at the distance
+    // where every corner of the container fits the view (vertical field of view, and the
+    // horizontal one of a 4:3 image or wider) with a small margin.
+    const glm::vec3 forward = -glm::normalize(glm::vec3(0.55f, 0.6f, 1.0f));
+    const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
+    const glm::vec3 up = glm::cross(right, forward);
+    const float tanVertical = 0.92f * std::tan(glm::radians(0.5f * c.fovDegrees));
+    const float tanHorizontal = tanVertical * 4.0f / 3.0f;
+    c.target = 0.5f * (min + max);
+    float distance = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p((corner & 1) ? max.x : min.x, (corner & 2) ? max.y : min.y, (corner & 4) ? max.z : min.z);
+        const glm::vec3 r = p - c.target;
+        // Seen from eye = target − d·forward, the corner is at depth d + r·forward.
+        const float along = glm::dot(r, forward);
+        distance = std::max({distance, std::abs(glm::dot(r, up)) / tanVertical - along,
+                             std::abs(glm::dot(r, right)) / tanHorizontal - along});
+    }
+    c.eye = c.target - forward * std::max(distance, 1e-3f);
     return fitClipPlanes(c, min, max);
 }
 

@@ -65,7 +65,7 @@ void SimulationRunner::apply(const Command& c) {
     switch (c.kind) {
         case Command::Kind::Play: playing_ = true; break;
         case Command::Kind::Pause: playing_ = false; break;
-        case Command::Kind::Step: stepOnce_ = true; playing_ = false; break;
+        case Command::Kind::Step: ++pendingSteps_; playing_ = false; break;
         case Command::Kind::Reset: source_->reset(); break;
         case Command::Kind::Speed: speed_ = std::clamp(c.value, 0.01, 100.0); break;
         case Command::Kind::Emitters:
@@ -102,7 +102,7 @@ void SimulationRunner::work() {
         std::vector<Command> commands;
         {
             std::unique_lock lock(mutex_);
-            if (!playing_ && !stepOnce_ && commands_.empty() && !quit_)
+            if (!playing_ && pendingSteps_ == 0 && commands_.empty() && !quit_)
                 wake_.wait_for(lock, std::chrono::milliseconds(100));
             if (quit_) return;
             commands.swap(commands_);
@@ -113,14 +113,14 @@ void SimulationRunner::work() {
             const auto now = Clock::now();
             budget = playing_ ? std::min(budget + speed_ * seconds(now - last), 0.05 * std::max(speed_, 1.0)) : 0.0;
             last = now;
-            if (stepOnce_ || (playing_ && budget > 0.0)) {
+            if (pendingSteps_ > 0 || (playing_ && budget > 0.0)) {
                 // One advance may be many solver steps (a Fluid frame): count the World's.
                 const std::uint64_t before = source_->world().stats().steps;
                 budget -= source_->advance();
                 const std::uint64_t taken = source_->world().stats().steps - before;
                 particleSteps += taken * source_->world().particles().size();
                 steps += taken;
-                stepOnce_ = false;
+                pendingSteps_ = std::max(pendingSteps_ - 1, 0);
                 changed = true;
             } else if (playing_) {
                 std::this_thread::sleep_for(std::chrono::milliseconds(1));

@@ -62,7 +62,7 @@ private:
     std::unique_ptr<SimulationSource> source_;
     // Worker-only state.
     bool playing_;
-    bool stepOnce_ = false;
+    int pendingSteps_ = 0;  // Step commands not yet taken: each click is one step
     double speed_;
     bool emitters_ = true;
     render::Snapshot back_;
