@@ -12,11 +12,14 @@ int main(int argc, char** argv) {
     std::string sceneFile;
     tide::view::ViewerOptions options;
     std::string mode = "surface";
+    std::string colorBy = "material";
     int threads = 0;
     app.add_option("scene", sceneFile, "Scene file (JSON)")->required();
     app.add_option("--width", options.width, "Window width")->check(CLI::Range(64, 16384));
     app.add_option("--height", options.height, "Window height")->check(CLI::Range(64, 16384));
     app.add_option("--mode", mode, "surface (water surface) or particles")->check(CLI::IsMember({"surface", "particles"}));
+    app.add_option("--color-by", colorBy, "Particles mode: material, speed, density or pressure")
+        ->check(CLI::IsMember({"material", "speed", "density", "pressure"}));
     app.add_option("--threads", threads, "Simulation worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
     app.add_option("--speed", options.speed, "Simulated seconds per wall second, at most")->check(CLI::Range(0.01, 100.0));
     app.add_flag("--paused", options.paused, "Start paused");
@@ -45,6 +48,10 @@ int main(int argc, char** argv) {
     scene.world.threads = threads;
     options.title = "tide-view: " + (scene.name.empty() ? sceneFile : scene.name);
     options.render.mode = mode == "particles" ? tide::render::RenderMode::Particles : tide::render::RenderMode::Surface;
+    options.render.colorBy = colorBy == "speed"      ? tide::render::ColorBy::Speed
+                             : colorBy == "density"  ? tide::render::ColorBy::Density
+                             : colorBy == "pressure" ? tide::render::ColorBy::Pressure
+                                                     : tide::render::ColorBy::Material;
     if (scene.camera) options.camera = tide::render::Camera{scene.camera->eye, scene.camera->target, scene.camera->fovDegrees};
     // Emitters run for the scene's whole end_time; the viewer runs on past it.
     try {
