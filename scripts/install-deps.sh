@@ -7,11 +7,11 @@ set -euo pipefail
 # meshio (reads our VTU frames), jsonschema (checks scenes against their schema), script (a
 # pseudo-terminal); benchmarks: Google Benchmark.
 # Viewer and `tide render`: GLFW, GLEW, Dear ImGui (with its GLFW/OpenGL3 backends) and stb (PNG,
-# ImGui's fonts); headless GL through Mesa's EGL and software drivers (llvmpipe, no GPU needed);
+# ImGui's fonts); GL through Mesa (GLX for windows, EGL headless; llvmpipe, no GPU needed);
 # ffmpeg for `tide render --video`; the viewer's test: Xvfb and xwd (x11-apps).
 packages=(cmake make g++ libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libgtest-dev libgmock-dev
           libbenchmark-dev python3-meshio python3-jsonschema bsdutils
-          libglfw3-dev libglew-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
+          libglfw3-dev libglew-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libglx-mesa0 libgl1-mesa-dri
           ffmpeg xvfb x11-apps)
 
 missing=()
