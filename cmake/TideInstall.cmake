@@ -8,7 +8,9 @@ install(TARGETS tide_core tide_io EXPORT tideTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/tide DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+# The renderer and viewer are build-tree libraries (apps and examples), not installed.
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/tide DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+  PATTERN render EXCLUDE PATTERN view EXCLUDE)
 install(EXPORT tideTargets NAMESPACE tide:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/tide)
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/tideConfig.cmake.in

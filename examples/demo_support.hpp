@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <tide/fluid.hpp>
+#include <tide/view/viewer.hpp>
 
 namespace demo {
 
@@ -22,12 +23,14 @@ struct Options {
     float speed = 2.0f;     ///< jet speed, m/s (jets demo)
     bool four = false;      ///< four jets of four materials (jets demo)
     double every = 1.0;     ///< simulated seconds between summary lines
+    bool view = false;      ///< open the viewer instead of running headless
 };
 
 inline void usage(const char* program) {
     std::fprintf(stderr,
-                 "usage: %s [--seconds S] [--every S] [--fps F] [--threads N] [--speed V] [--four]\n"
-                 "  runs one of the seed's demos headless, printing a summary per simulated second\n",
+                 "usage: %s [--seconds S] [--every S] [--fps F] [--threads N] [--speed V] [--four] [--view]\n"
+                 "  runs one of the seed's demos headless, printing a summary per simulated second;\n"
+                 "  --view opens the viewer on it instead (tide-view's window and controls)\n",
                  program);
 }
 
@@ -56,6 +59,7 @@ inline Options parse(int argc, char** argv) {
         else if (flag == "--threads") o.threads = static_cast<int>(number(0.0, 1024.0));
         else if (flag == "--speed") o.speed = static_cast<float>(number(0.0, 100.0));
         else if (flag == "--four") o.four = true;
+        else if (flag == "--view") o.view = true;
         else if (flag == "--help" || flag == "-h") {
             usage(argv[0]);
             std::exit(0);
@@ -94,9 +98,18 @@ inline void printSummary(const tide::Fluid& fluid) {
     std::fflush(stdout);
 }
 
-/// The seed's render loop without the rendering: `perFrame` runs before each step
-/// (emitters call addPointTick there). Prints a summary each simulated second and a total.
-inline int run(tide::Fluid& fluid, const Options& o, const std::function<void(tide::Fluid&)>& perFrame = {}) {
+/// The seed's render loop: `setup` fills a fresh Fluid (again on the viewer's reset),
+/// `perFrame` runs before each step (emitters call addPointTick there). Headless, it prints a
+/// summary each simulated second and a total; with --view it opens the viewer instead.
+inline int run(const Options& o, const std::function<void(tide::Fluid&)>& setup,
+               const std::function<void(tide::Fluid&)>& perFrame = {}) {
+    if (o.view) {
+        tide::view::ViewerOptions viewer;
+        viewer.title = "tide demo";
+        return tide::view::runViewer(tide::view::fluidSource(setup, perFrame, 1.0f / o.fps), viewer);
+    }
+    tide::Fluid fluid;
+    setup(fluid);
     const auto start = std::chrono::steady_clock::now();
     const int frames = static_cast<int>(o.seconds * o.fps + 0.5);
     const int framesPerSummary = std::max(1, static_cast<int>(o.every * o.fps + 0.5));

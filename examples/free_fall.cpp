@@ -3,8 +3,8 @@
 
 int main(int argc, char** argv) {
     const demo::Options options = demo::parse(argc, argv);
-    tide::Fluid fluid;
-    demo::initSeedTank(fluid, options);
-    fluid.addPoint(glm::vec3(-15, -10, -15), glm::vec3(10, 20, 10), glm::vec3(0, 0, 0));
-    return demo::run(fluid, options);
+    return demo::run(options, [&](tide::Fluid& fluid) {
+        demo::initSeedTank(fluid, options);
+        fluid.addPoint(glm::vec3(-15, -10, -15), glm::vec3(10, 20, 10), glm::vec3(0, 0, 0));
+    });
 }

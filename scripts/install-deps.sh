@@ -6,8 +6,13 @@ set -euo pipefail
 # build: compiler, CMake, GLM, JSON, CLI11, tinyobjloader (OBJ obstacle meshes); tests: GoogleTest,
 # meshio (reads our VTU frames), jsonschema (checks scenes against their schema), script (a
 # pseudo-terminal); benchmarks: Google Benchmark.
+# Viewer and `tide render`: GLFW, GLEW, Dear ImGui (with its GLFW/OpenGL3 backends) and stb (PNG,
+# ImGui's fonts); GL through Mesa (GLX for windows, EGL headless; llvmpipe, no GPU needed);
+# ffmpeg for `tide render --video`; the viewer's test: Xvfb and xwd (x11-apps).
 packages=(cmake make g++ libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libgtest-dev libgmock-dev
-          libbenchmark-dev python3-meshio python3-jsonschema bsdutils)
+          libbenchmark-dev python3-meshio python3-jsonschema bsdutils
+          libglfw3-dev libglew-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libglx-mesa0 libgl1-mesa-dri
+          ffmpeg xvfb x11-apps)
 
 missing=()
 for pkg in "${packages[@]}"; do

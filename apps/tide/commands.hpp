@@ -23,7 +23,22 @@ struct RunOptions {
     bool quiet = false;
 };
 
+struct RenderOptions {
+    std::string scene;
+    std::string out;                      ///< empty: out/<scene file stem>_render
+    int width = 960;
+    int height = 540;
+    std::string video;                    ///< empty: PNG frames only
+    std::string mode = "surface";         ///< surface, particles
+    std::string colorBy = "material";     ///< material, speed, density, pressure
+    std::optional<double> endTime;
+    int threads = 0;
+    bool force = false;
+    bool quiet = false;
+};
+
 int runCommand(const RunOptions& options);
+int renderCommand(const RenderOptions& options);
 /// Prints each problem of a bad scene on stderr, prefixed with the file unless it already is.
 void reportSceneProblems(const std::string& file, const std::vector<std::string>& problems);
 int validateCommand(const std::string& scene);

@@ -29,6 +29,27 @@ int main(int argc, char** argv) {
                    "OUT/frame_NNNNN.<format>, with OUT/frames.pvd for ParaView and OUT/stats.json at the end.\n"
                    "Exit codes: 0 success, 1 the run failed (e.g. diverged), 2 bad input.");
 
+    RenderOptions render;
+    CLI::App* renderApp = app.add_subcommand("render", "Simulate a scene and draw its frames as PNG images (no display needed)");
+    renderApp->add_option("scene", render.scene, "Scene file (JSON)")->required();
+    renderApp->add_option("--out", render.out, "Output folder (default: out/<scene file name>_render)");
+    renderApp->add_option("--width", render.width, "Image width, pixels")->check(CLI::Range(16, 8192));
+    renderApp->add_option("--height", render.height, "Image height, pixels")->check(CLI::Range(16, 8192));
+    renderApp->add_option("--video", render.video, "Also encode the frames as this MP4 file (needs ffmpeg)");
+    renderApp->add_option("--mode", render.mode, "surface (water surface) or particles (lit spheres)")
+        ->check(CLI::IsMember({"surface", "particles"}));
+    renderApp->add_option("--color-by", render.colorBy, "Particles mode: material, speed, density or pressure")
+        ->check(CLI::IsMember({"material", "speed", "density", "pressure"}));
+    renderApp->add_option("--end-time", render.endTime, "Simulated seconds, overriding the scene's end_time")
+        ->check(CLI::PositiveNumber);
+    renderApp->add_option("--threads", render.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
+    renderApp->add_flag("--force", render.force, "Write into a folder that holds another run, replacing its frames");
+    renderApp->add_flag("--quiet", render.quiet, "No progress output");
+    renderApp->footer("Frame k (time k/output.fps) is drawn as OUT/frame_NNNNN.png, seen from the scene's camera\n"
+                      "(\"camera\": {\"eye\", \"target\", \"fov\"}) or from a 3/4 view of the container. Renders\n"
+                      "offscreen with EGL (Mesa's software llvmpipe when there is no GPU).\n"
+                      "Exit codes: 0 success, 1 the render failed, 2 bad input.");
+
     std::string validateScene;
     CLI::App* validateApp = app.add_subcommand("validate", "Check a scene and print what it would simulate");
     validateApp->add_option("scene", validateScene, "Scene file (JSON)")->required();
@@ -42,5 +63,6 @@ int main(int argc, char** argv) {
         return kExitBadInput;
     }
     if (*runApp) return runCommand(run);
+    if (*renderApp) return renderCommand(render);
     return validateCommand(validateScene);
 }

@@ -108,6 +108,8 @@ public:
     [[nodiscard]] float metresPerUnit() const { return settings_.metresPerUnit; }
     /// The engine underneath (SI units), e.g. for statistics.
     [[nodiscard]] const World& world() const;
+    /// ... writable, e.g. for a viewer to push particles (World::velocities()) between steps.
+    [[nodiscard]] World& world();
 
 private:
     struct TickEmitter {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -104,6 +105,9 @@ public:
 
     [[nodiscard]] double time() const;
     [[nodiscard]] const ParticleStore& particles() const;
+    /// Velocities of every particle, writable between steps, for interactive tools (a
+    /// viewer's mouse push). Positions and the other arrays stay the solver's to change.
+    [[nodiscard]] std::span<glm::vec3> velocities();
     [[nodiscard]] const WorldStats& stats() const;
     [[nodiscard]] const WorldDef& def() const;
     /// Kernel support radius h, m.

@@ -417,6 +417,7 @@ void World::advance(double duration, const std::function<void()>& afterStep) {
 
 double World::time() const { return impl_->time; }
 const ParticleStore& World::particles() const { return impl_->particles; }
+std::span<glm::vec3> World::velocities() { return impl_->particles.velocity; }
 const WorldStats& World::stats() const { return impl_->stats; }
 const WorldDef& World::def() const { return impl_->def; }
 float World::supportRadius() const { return impl_->h; }

@@ -168,6 +168,13 @@ const World& Fluid::world() const {
     return *world_;
 }
 
+World& Fluid::world() {
+    if (!world_) throw std::logic_error("Fluid::world: call init() first");
+    // The caller may change velocities: the cached point records would go stale.
+    invalidateCaches();
+    return *world_;
+}
+
 void Fluid::invalidateCaches() {
     pointsStale_ = true;
     positionsStale_ = true;

@@ -431,7 +431,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     Reader r;
     Scene scene;
     if (!r.object(root, "", {"name", "unit_scale", "domain", "gravity", "particle_spacing", "end_time", "solver",
-                             "materials", "blocks", "emitters", "obstacles", "output"}))
+                             "materials", "blocks", "emitters", "obstacles", "output", "camera"}))
         throw SceneError(r.problems);
 
     float scale = 1.0f;
@@ -546,6 +546,17 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
                     scene.output.formats.push_back(*f);
             }
         }
+    }
+
+    if (root.contains("camera") && r.object(root["camera"], "camera", {"eye", "target", "fov"})) {
+        const json& cam = root["camera"];
+        const auto eye = r.vec3(cam, "eye", "camera", true);
+        const auto target = r.vec3(cam, "target", "camera", true);
+        const auto fov = r.number(cam, "fov", "camera", false, 0.0, 179.0, true);
+        if (eye && target && *eye == *target)
+            r.fail("camera.target", "must differ from camera.eye, got " + showVec(*target));
+        else if (eye && target && (!cam.contains("fov") || fov))
+            scene.camera = CameraDef{*eye * scale, *target * scale, fov ? static_cast<float>(*fov) : 45.0f};
     }
 
     if (r.problems.empty()) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -23,6 +24,13 @@ struct OutputDef {
     std::vector<Format> formats{Format::Vtu};
 };
 
+/// Where renderers look from (scene key `camera`), in metres.
+struct CameraDef {
+    glm::vec3 eye{0.0f};
+    glm::vec3 target{0.0f};
+    float fovDegrees = 45.0f;                 ///< vertical field of view
+};
+
 /// A parsed, validated scene. Lengths are already scaled to metres (`unit_scale`).
 struct Scene {
     std::string name;
@@ -33,6 +41,7 @@ struct Scene {
     std::vector<BlockDef> blocks;             ///< material indices resolved from names
     std::vector<EmitterDef> emitters;
     OutputDef output;
+    std::optional<CameraDef> camera;          ///< empty: renderers choose a view of the container
 };
 
 /// Bad input: one line per problem, "path: message" or "file:line:column: message".

@@ -1,0 +1,290 @@
+// `tide render` as a user runs it, judged by pixel statistics against rules (never against a
+// stored image): frames of the asked size, water where the fluid is and sky elsewhere, each
+// material's colour in particle mode; bad flags refused; the scene's camera key checked.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+#include <stb/stb_image.h>  // implemented by Debian's libstb
+
+#include <tide/render/camera.hpp>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+    int exit;
+    std::string output;  ///< stdout and stderr together
+};
+
+Result run(const std::string& command) {
+    Result r{-1, {}};
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return r;
+    std::array<char, 4096> buffer{};
+    std::size_t n;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
+}
+
+fs::path scratchRoot() { return fs::temp_directory_path() / ("tide_render_test_" + std::to_string(::getpid())); }
+
+/// Removes this process's scratch folder after the tests.
+struct ScratchCleanup : ::testing::Environment {
+    void TearDown() override { fs::remove_all(scratchRoot()); }
+};
+[[maybe_unused]] auto* const kCleanup = ::testing::AddGlobalTestEnvironment(new ScratchCleanup);
+
+fs::path scratch(const std::string& name) {
+    const fs::path dir = scratchRoot() / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir.parent_path());
+    return dir;
+}
+
+fs::path writeScene(const std::string& name, const std::string& text) {
+    const fs::path file = scratch(name + ".json");
+    std::ofstream(file) << text;
+    return file;
+}
+
+const std::string kTide = TIDE_BIN;
+
+// A tank 0.4 × 0.3 × 0.3 m, seen from the front and above by the scene's camera.
+const glm::vec3 kTankMax{0.4f, 0.3f, 0.3f};
+const tide::render::Camera kCamera{{0.2f, 0.3f, 0.75f}, {0.2f, 0.1f, 0.15f}, 50.0f};
+constexpr float kSpacing = 0.02f;
+
+std::string tankScene(const std::string& materials, const std::string& blocks, const std::string& end = "0.05") {
+    return R"({"name": "render test", "domain": {"min": [0, 0, 0], "max": [0.4, 0.3, 0.3]},
+  "particle_spacing": 0.02, "end_time": )" + end + R"(, "materials": )" + materials + R"(, "blocks": )" + blocks + R"(,
+  "output": {"fps": 20},
+  "camera": {"eye": [0.2, 0.3, 0.75], "target": [0.2, 0.1, 0.15], "fov": 50}})";
+}
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<unsigned char> rgb;
+    [[nodiscard]] glm::vec3 at(int x, int y) const {
+        const auto i = 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x));
+        return glm::vec3(rgb[i], rgb[i + 1], rgb[i + 2]);
+    }
+};
+
+Image readPng(const fs::path& file) {
+    Image image;
+    int channels = 0;
+    unsigned char* data = stbi_load(file.c_str(), &image.width, &image.height, &channels, 3);
+    if (!data) return image;
+    image.rgb.assign(data, data + 3 * image.width * image.height);
+    stbi_image_free(data);
+    return image;
+}
+
+/// Where the ray through a pixel first enters the box lo..hi (slab test); negative: it misses.
+float rayHitsBox(const glm::vec3& origin, const glm::vec3& dir, const glm::vec3& lo, const glm::vec3& hi) {
+    const glm::vec3 inv = 1.0f / dir;
+    const glm::vec3 t0 = (lo - origin) * inv, t1 = (hi - origin) * inv;
+    const glm::vec3 near = glm::min(t0, t1), far = glm::max(t0, t1);
+    const float enter = std::max({near.x, near.y, near.z}), leave = std::min({far.x, far.y, far.z});
+    return enter <= leave && leave > 0.0f ? enter : -1.0f;
+}
+
+/// Share of the pixels whose ray satisfies `select` that satisfy `colour`; counts them in `n`.
+double share(const Image& image, const std::function<bool(const glm::vec3& dir)>& select,
+             const std::function<bool(const glm::vec3& rgb)>& colour, int& n) {
+    n = 0;
+    int good = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3 dir = tide::render::pixelRay(kCamera, image.width, image.height,
+                                                         {static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f});
+            if (!select(dir)) continue;
+            ++n;
+            if (colour(image.at(x, y))) ++good;
+        }
+    return n ? static_cast<double>(good) / n : 0.0;
+}
+
+// The renderer's sky runs from a pale horizon to a blue zenith: bright, blue the strongest.
+bool skyLike(const glm::vec3& c) { return c.b >= 170.0f && c.b >= c.g && c.g >= c.r && c.r >= 40.0f; }
+// Water over sand: dark blue-green, its red well below both green and blue, far from the sky.
+bool waterLike(const glm::vec3& c) {
+    return c.r < 110.0f && c.g > c.r + 30.0f && c.b > c.r + 30.0f && c.b < 200.0f;
+}
+
+TEST(RenderCli, WritesPngFramesOfTheAskedSizeAndNothingElse) {
+    const fs::path scene = writeScene("size", tankScene(R"([{"name": "water", "density": 1000}])",
+                                                        R"([{"min": [0, 0, 0], "max": [0.4, 0.1, 0.3]}])", "0.1"));
+    const fs::path out = scratch("size_out");
+    const Result r = run(kTide + " render " + scene.string() + " --out " + out.string() +
+                         " --width 256 --height 192 --threads 1 --quiet");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(out)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    EXPECT_EQ(names, (std::vector<std::string>{"frame_00000.png", "frame_00001.png", "frame_00002.png"}));
+    for (const std::string& name : names) {
+        int w = 0, h = 0, channels = 0;
+        ASSERT_TRUE(stbi_info((out / name).c_str(), &w, &h, &channels)) << name;
+        EXPECT_EQ(w, 256) << name;
+        EXPECT_EQ(h, 192) << name;
+    }
+}
+
+TEST(RenderCli, WaterSurfaceShowsWaterWhereTheFluidIsAndSkyElsewhere) {
+    const glm::vec3 waterMax{0.4f, 0.12f, 0.3f};
+    const fs::path scene = writeScene("surface", tankScene(R"([{"name": "water", "density": 1000}])",
+                                                           R"([{"min": [0, 0, 0], "max": [0.4, 0.12, 0.3]}])"));
+    const fs::path out = scratch("surface_out");
+    const Result r = run(kTide + " render " + scene.string() + " --out " + out.string() +
+                         " --width 256 --height 192 --threads 1 --quiet --mode surface");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    const Image image = readPng(out / "frame_00000.png");  // the block as built, not yet moved
+    ASSERT_EQ(image.width, 256);
+
+    // Fluid: rays that enter the water block (shrunk by a spacing, away from its fuzzy edges).
+    const glm::vec3 inset(kSpacing);
+    int fluidPixels = 0, skyPixels = 0;
+    const double water = share(image, [&](const glm::vec3& d) { return rayHitsBox(kCamera.eye, d, inset, waterMax - inset) > 0.0f; },
+                               waterLike, fluidPixels);
+    // Sky: rays above the horizon that miss the whole tank (grown a little for its edges).
+    const double sky = share(image, [&](const glm::vec3& d) {
+        return d.y > 0.02f && rayHitsBox(kCamera.eye, d, -inset, kTankMax + inset) < 0.0f;
+    }, skyLike, skyPixels);
+    const int total = image.width * image.height;
+    std::printf("water-coloured: %.3f of %d fluid pixels; sky-coloured: %.3f of %d sky pixels\n", water, fluidPixels,
+                sky, skyPixels);
+    ASSERT_GT(fluidPixels, total / 20) << "the test's camera should see the water";
+    ASSERT_GT(skyPixels, total / 20) << "the test's camera should see the sky";
+    EXPECT_GT(water, 0.9) << "of " << fluidPixels << " pixels looking at the water";
+    EXPECT_GT(sky, 0.97) << "of " << skyPixels << " pixels looking at the sky";
+    // And the water is not the sky's colour anywhere it is seen.
+    int n = 0;
+    EXPECT_LT(share(image, [&](const glm::vec3& d) { return rayHitsBox(kCamera.eye, d, inset, waterMax - inset) > 0.0f; },
+                    skyLike, n), 0.01);
+}
+
+TEST(RenderCli, ParticleModeShowsEachMaterialsColour) {
+    const fs::path scene = writeScene(
+        "materials",
+        tankScene(R"([{"name": "red", "density": 1000, "color": [0.9, 0.1, 0.1]},
+                      {"name": "green", "density": 1000, "color": [0.1, 0.8, 0.15]}])",
+                  R"([{"min": [0, 0, 0], "max": [0.16, 0.12, 0.3], "material": "red"},
+                      {"min": [0.24, 0, 0], "max": [0.4, 0.12, 0.3], "material": "green"}])"));
+    const fs::path out = scratch("materials_out");
+    const Result r = run(kTide + " render " + scene.string() + " --out " + out.string() +
+                         " --width 256 --height 192 --threads 1 --quiet --mode particles --color-by material");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    const Image image = readPng(out / "frame_00000.png");
+    ASSERT_EQ(image.width, 256);
+    const glm::vec3 inset(kSpacing);
+    const auto red = [](const glm::vec3& c) { return c.r > c.g + 50.0f && c.r > c.b + 50.0f; };
+    const auto green = [](const glm::vec3& c) { return c.g > c.r + 50.0f && c.g > c.b + 40.0f; };
+    int n = 0;
+    const auto hitsLeft = [&](const glm::vec3& d) {
+        return rayHitsBox(kCamera.eye, d, inset, glm::vec3(0.16f, 0.12f, 0.3f) - inset) > 0.0f;
+    };
+    const auto hitsRight = [&](const glm::vec3& d) {
+        return rayHitsBox(kCamera.eye, d, glm::vec3(0.24f, 0.0f, 0.0f) + inset, glm::vec3(0.4f, 0.12f, 0.3f) - inset) > 0.0f;
+    };
+    EXPECT_GT(share(image, hitsLeft, red, n), 0.85) << n << " pixels";
+    EXPECT_GT(n, 500);
+    EXPECT_GT(share(image, hitsRight, green, n), 0.85) << n << " pixels";
+    EXPECT_GT(n, 500);
+    EXPECT_LT(share(image, hitsLeft, green, n), 0.02);
+}
+
+TEST(RenderCli, ObstaclesAreDrawnAndHideTheWaterBehindThem) {
+    // Water at the back of the tank, a box obstacle in front of it (between it and the camera).
+    std::string text = tankScene(R"([{"name": "water", "density": 1000}])",
+                                 R"([{"min": [0, 0, 0], "max": [0.4, 0.14, 0.1]}])");
+    text.insert(text.rfind('}'), R"(, "obstacles": [{"type": "box", "min": [0.12, 0, 0.16], "max": [0.28, 0.2, 0.24]}])");
+    const fs::path scene = writeScene("obstacle", text);
+    const fs::path out = scratch("obstacle_out");
+    const Result r = run(kTide + " render " + scene.string() + " --out " + out.string() +
+                         " --width 256 --height 192 --threads 1 --quiet --mode surface");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    const Image image = readPng(out / "frame_00000.png");
+    ASSERT_EQ(image.width, 256);
+    const glm::vec3 obstacleMin(0.12f, 0.0f, 0.16f), obstacleMax(0.28f, 0.2f, 0.24f), margin(0.005f);
+    const auto grey = [](const glm::vec3& c) {
+        return std::abs(c.r - c.g) < 25.0f && std::abs(c.g - c.b) < 25.0f && c.r > 30.0f && c.r < 200.0f;
+    };
+    int n = 0;
+    const auto hitsObstacle = [&](const glm::vec3& d) {
+        return rayHitsBox(kCamera.eye, d, obstacleMin + margin, obstacleMax - margin) > 0.0f;
+    };
+    EXPECT_GT(share(image, hitsObstacle, grey, n), 0.95) << n << " pixels";
+    EXPECT_GT(n, 500);
+    EXPECT_LT(share(image, hitsObstacle, waterLike, n), 0.02) << "water drawn over the obstacle in front of it";
+}
+
+TEST(RenderCli, RefusesBadSizesNamingTheFlagAndValue) {
+    const fs::path scene = writeScene("bad", tankScene(R"([{"name": "water", "density": 1000}])", "[]"));
+    for (const auto& [flags, flag, value] : std::vector<std::array<std::string, 3>>{
+             {"--width 0", "--width", "0"}, {"--height 99999", "--height", "99999"}, {"--width abc", "--width", "abc"}}) {
+        const fs::path out = scratch("bad_out");
+        const Result r = run(kTide + " render " + scene.string() + " --out " + out.string() + " " + flags);
+        EXPECT_EQ(r.exit, 2) << flags << ": " << r.output;
+        EXPECT_NE(r.output.find(flag), std::string::npos) << r.output;
+        EXPECT_NE(r.output.find(value), std::string::npos) << r.output;
+        EXPECT_FALSE(fs::exists(out)) << "nothing is written on bad input";
+    }
+}
+
+TEST(RenderCli, VideoThroughFfmpegOrAClearErrorWithoutIt) {
+    const fs::path scene = writeScene("video", tankScene(R"([{"name": "water", "density": 1000}])",
+                                                         R"([{"min": [0, 0, 0], "max": [0.4, 0.1, 0.3]}])", "0.1"));
+    const fs::path out = scratch("video_out");
+    const fs::path video = scratch("video.mp4");
+    Result r = run(kTide + " render " + scene.string() + " --out " + out.string() + " --video " + video.string() +
+                   " --width 64 --height 48 --threads 1 --quiet");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    EXPECT_GT(fs::file_size(video), 100u);
+
+    r = run("env PATH=/nonexistent " + kTide + " render " + scene.string() + " --out " + scratch("nf").string() +
+            " --video " + scratch("nf.mp4").string() + " --width 64 --height 48 --quiet");
+    EXPECT_EQ(r.exit, 2) << r.output;
+    EXPECT_NE(r.output.find("--video"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("ffmpeg"), std::string::npos) << r.output;
+}
+
+TEST(SceneCamera, BadCamerasAreNamedByFieldAndValue) {
+    const std::string base = R"({"domain": {"min": [0, 0, 0], "max": [0.2, 0.2, 0.2]}, "particle_spacing": 0.02,
+  "end_time": 0.1, "materials": [{"name": "water", "density": 1000}], "camera": )";
+    for (const auto& [camera, field, value] : std::vector<std::array<std::string, 3>>{
+             {R"({"eye": [1, 1, 1], "target": [0, 0, 0], "fov": 0})", "camera.fov", "0"},
+             {R"({"eye": [1, 1, 1], "target": [0, 0, 0], "fov": 200})", "camera.fov", "200"},
+             {R"({"eye": [1, 1], "target": [0, 0, 0]})", "camera.eye", "[1,1]"},
+             {R"({"target": [0, 0, 0]})", "camera.eye", "missing"},
+             {R"({"eye": [1, 1, 1], "target": [1, 1, 1]})", "camera.target", "[1, 1, 1]"},
+             {R"({"eye": [1, 1, 1], "target": [0, 0, 0], "fv": 30})", "camera.fv", "did you mean \"fov\""}}) {
+        const fs::path scene = writeScene("camera", base + camera + "}");
+        const Result r = run(kTide + " validate " + scene.string());
+        EXPECT_EQ(r.exit, 2) << camera << ": " << r.output;
+        EXPECT_NE(r.output.find(field), std::string::npos) << camera << ": " << r.output;
+        EXPECT_NE(r.output.find(value), std::string::npos) << camera << ": " << r.output;
+    }
+    const fs::path good = writeScene("camera", base + R"({"eye": [1, 1, 1], "target": [0, 0, 0], "fov": 60}})");
+    const Result r = run(kTide + " validate " + good.string());
+    EXPECT_EQ(r.exit, 0) << r.output;
+}
+
+}  // namespace
