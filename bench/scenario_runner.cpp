@@ -64,10 +64,13 @@ std::string shellOutput(const std::string& command) {
 }
 
 /// Runs one scenario in this process and prints its figures as one JSON line.
-int runOne(const Scenario& s, double seconds, int threads) {
+int runOne(const Scenario& s, double seconds, int threads) try {
     tide::io::Scene scene = tide::io::loadScene(fs::path(TIDE_SOURCE_DIR) / s.scene);
     if (!s.solver.empty()) scene.world.solver.method = s.solver;
-    if (s.spacing > 0.0f) scene.world.particleSpacing = s.spacing;
+    if (s.spacing > 0.0f) {
+        scene.world.particleSpacing = s.spacing;
+        scene.world.capacity = tide::WorldDef{}.capacity;  // the parser sized it for the scene's spacing
+    }
     if (s.soundSpeed > 0.0f) scene.world.solver.soundSpeed = s.soundSpeed;
     if (s.maxDt > 0.0f) scene.world.solver.maxDt = s.maxDt;
     scene.world.threads = threads;
@@ -117,6 +120,9 @@ int runOne(const Scenario& s, double seconds, int threads) {
     };
     std::cout << row.dump() << std::endl;
     return 0;
+} catch (const std::exception& e) {
+    std::cout << "error: " << e.what() << std::endl;
+    return 1;
 }
 
 std::string cpuModel() {

@@ -32,9 +32,33 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     const auto n = p.size();
     const auto nb = static_cast<std::uint32_t>(ctx.boundary.position.size());
     const kernels::CubicSpline w(ctx.supportRadius);
-    fluidF_.compute(ctx.neighbors, p.position, p.position, ctx.periodic, w, PairKernels::Term::GradientFactor, ctx.threads);
-    wallF_.compute(ctx.boundaryNeighbors, p.position, ctx.boundary.position, ctx.periodic, w,
-                   PairKernels::Term::GradientFactor, ctx.threads);
+    // Densities (Akinci et al. 2012, as sph::computeDensities) and the gradient factors from
+    // one square root per pair.
+    fluidF_.resize(ctx.neighbors);
+    wallF_.resize(ctx.boundaryNeighbors);
+    const float self = w.value(0.0f);
+    withPairVector(ctx.periodic, [&](auto delta) {
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+            const glm::vec3 xi = p.position[i];
+            float rho = p.mass[i] * self;
+            float* f = fluidF_.of(ctx.neighbors, i).data();
+            for (const std::uint32_t j : ctx.neighbors.of(i)) {
+                const glm::vec3 d = delta(xi, p.position[j]);
+                const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+                rho += p.mass[j] * w.value(r);
+                *f++ = PairKernels::gradientFactor(w, r);
+            }
+            float volume = 0.0f;
+            f = wallF_.of(ctx.boundaryNeighbors, i).data();
+            for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+                const glm::vec3 d = delta(xi, ctx.boundary.position[b]);
+                const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+                volume += ctx.boundary.volume[b] * w.value(r);
+                *f++ = PairKernels::gradientFactor(w, r);
+            }
+            p.density[i] = rho + ctx.materials[p.material[i]].restDensity * volume;
+        });
+    });
     positionMass_.resize(n);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { positionMass_[i] = glm::vec4(p.position[i], p.mass[i]); });
     wallPositionVolume_.resize(nb);
@@ -259,7 +283,6 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
 double DfsphBender2017::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
-    sph::computeDensities(ctx);
     prepare(ctx);
     positionK_.resize(n);
     wallPositionK_.resize(ctx.boundary.position.size());

@@ -35,7 +35,7 @@ public:
     double step(StepContext& ctx) override;
 
 private:
-    /// Kernel factors of this step's pairs and the packed positions the iterations read.
+    /// Densities, kernel factors of this step's pairs and the packed positions the iterations read.
     void prepare(StepContext& ctx);
     void computeAlpha(StepContext& ctx);
     /// Σ_j m_j (v_i − v_j)·∇W_ij + Σ_b Ψ_b v_i·∇W_ib: the rate of change of ρ_i (walls at rest).

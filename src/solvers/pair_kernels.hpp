@@ -9,38 +9,29 @@
 #include <span>
 #include <vector>
 
-#include <glm/geometric.hpp>
-
 #include "core/kernels.hpp"
-#include "core/parallel.hpp"
-#include "core/periodic_box.hpp"
 #include "neighbors/neighbor_list.hpp"
 
 namespace tide {
 
-/// Per pair (i, j) of a list, in its pair order (NeighborList::offset): either the gradient
-/// factor F_ij = W'(r_ij)/r_ij, so ∇W_ij = F_ij (x_i − x_j), or the value W(r_ij).
+/// A float per pair (i, j) of a neighbour list, in its pair order (NeighborList::offset):
+/// here the gradient factor F_ij = W'(r_ij)/r_ij, so that ∇W_ij = F_ij (x_i − x_j).
 class PairKernels {
 public:
-    enum class Term { GradientFactor, Value };
+    /// Room for one value per pair of `list`.
+    void resize(const NeighborList& list) { values_.resize(list.pairCount()); }
 
-    /// `queries` are the list's particles i, `points` the set its neighbours j index.
-    void compute(const NeighborList& list, std::span<const glm::vec3> queries, std::span<const glm::vec3> points,
-                 const PeriodicBox& box, const kernels::CubicSpline& w, Term term, int threads) {
-        values_.resize(list.pairCount());
-        parallelFor(list.particleCount(), threads, [&](std::uint32_t i) {
-            float* out = values_.data() + list.offset(i);
-            const glm::vec3 xi = queries[i];
-            for (const std::uint32_t j : list.of(i)) {
-                const float r = glm::length(box.delta(xi, points[j]));
-                *out++ = term == Term::Value ? w.value(r) : (r > 0.0f ? w.derivative(r) / r : 0.0f);
-            }
-        });
-    }
-
-    /// The factors of i's pairs, aligned with list.of(i).
+    /// The values of i's pairs, aligned with list.of(i).
     [[nodiscard]] std::span<const float> of(const NeighborList& list, std::uint32_t i) const {
         return {values_.data() + list.offset(i), list.of(i).size()};
+    }
+    [[nodiscard]] std::span<float> of(const NeighborList& list, std::uint32_t i) {
+        return {values_.data() + list.offset(i), list.of(i).size()};
+    }
+
+    /// W'(r)/r, 0 at r = 0.
+    [[nodiscard]] static float gradientFactor(const kernels::CubicSpline& w, float r) {
+        return r > 0.0f ? w.derivative(r) / r : 0.0f;
     }
 
 private:
