@@ -1,6 +1,7 @@
 // Wave gauges, probes and the damping zone on simple setups.
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -74,6 +75,27 @@ TEST(WaveMaker, PistonPushesTheWaterAndConservesMass) {
     EXPECT_EQ(world.particles().size(), n);
     EXPECT_EQ(world.totalMass(), mass);
     EXPECT_EQ(world.countEscapedParticles(), 0u);
+}
+
+TEST(WaveMaker, FlapIsBitIdenticalAcrossThreadCounts) {
+    WaveMakerDef paddle;
+    paddle.type = WaveMakerDef::Type::Flap;
+    paddle.x = 0.1f;
+    paddle.depth = 0.15f;
+    paddle.waveHeight = 0.02f;
+    paddle.period = 0.8f;
+    paddle.rampTime = 0.2f;
+    const auto run = [&](int threads) {
+        World world = scenarios::waveFlume(0.03f, 1.2f, 0.15f, paddle, 0.3f, threads);
+        world.advance(0.1);
+        std::vector<glm::vec3> byId(world.particles().size());
+        for (std::uint32_t i = 0; i < world.particles().size(); ++i) byId[world.particles().id[i]] = world.particles().position[i];
+        return byId;
+    };
+    const auto one = run(1), two = run(2), three = run(3);
+    ASSERT_EQ(one.size(), two.size());
+    EXPECT_TRUE(one == two);
+    EXPECT_TRUE(one == three);
 }
 
 }  // namespace
