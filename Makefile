@@ -2,7 +2,9 @@
 BUILD_DIR ?= build
 JOBS ?= $(shell nproc)
 CMAKE_FLAGS ?=
-DEMO_SECONDS ?= 2
+DEMO_SECONDS ?= 4
+# The long-flume wave benchmark's particle spacing (0.005 m: 8 particles per wave height, hours on 2 cores).
+WAVE_BENCH_SPACING ?= 0.005
 
 .PHONY: all deps configure build demo test bench clean
 
@@ -17,9 +19,9 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# The default scene (the seed's free-fall demo) through `tide run`, frames in out/demo.
+# The default scene (waves breaking on a beach) through `tide run`, frames and gauges.csv in out/demo.
 demo: build
-	@$(BUILD_DIR)/bin/tide run scenes/free_fall.json --out out/demo --force --end-time $(DEMO_SECONDS)
+	@$(BUILD_DIR)/bin/tide run scenes/beach.json --out out/demo --force --end-time $(DEMO_SECONDS)
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
@@ -30,6 +32,7 @@ BENCH_SECONDS ?= 0.1
 bench: build
 	@$(BUILD_DIR)/bin/tide_bench --benchmark_counters_tabular=true
 	@$(BUILD_DIR)/bin/tide_scenarios --seconds $(BENCH_SECONDS)
+	@$(BUILD_DIR)/bin/tide_wave_bench --spacing $(WAVE_BENCH_SPACING)
 
 clean:
 	@rm -rf $(BUILD_DIR)

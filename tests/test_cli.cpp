@@ -135,6 +135,21 @@ std::vector<BrokenScene> brokenScenes() {
         {"periodic axis too short", replace(replace(ok, "\"max\": [0.2, 0.2, 0.2]}", "\"max\": [0.2, 0.2, 0.2], \"periodic\": [true, false, false]}"),
                                             "\"particle_spacing\": 0.02", "\"particle_spacing\": 0.06"), "domain.periodic"},
         {"unknown viscosity model", smallScene(R"(, "solver": {"viscosity": "moris"})"), "solver.viscosity: unknown viscosity model \"moris\" (did you mean \"morris\"?)"},
+        {"wave period negative", smallScene(R"(, "wavemaker": {"type": "piston", "x": 0.05, "depth": 0.1, "wave_height": 0.01, "period": -1})"),
+         "wavemaker.period: must be > 0, got -1"},
+        {"wave maker type", smallScene(R"(, "wavemaker": {"type": "pistn", "x": 0.05, "depth": 0.1, "wave_height": 0.01, "period": 1})"),
+         "wavemaker.type: must be \"piston\" or \"flap\", got \"pistn\" (did you mean \"piston\"?)"},
+        {"wave maker outside", smallScene(R"(, "wavemaker": {"type": "flap", "x": 3, "depth": 0.1, "wave_height": 0.01, "period": 1})"), "wavemaker.x"},
+        {"wave maker unknown key", smallScene(R"(, "wavemaker": {"type": "flap", "x": 0.05, "depth": 0.1, "wave_height": 0.01, "period": 1, "stroke": 2})"),
+         "wavemaker.stroke: unknown key"},
+        {"regular and irregular", smallScene(R"(, "wavemaker": {"type": "flap", "x": 0.05, "depth": 0.1, "wave_height": 0.01, "period": 1, "spectrum": {"type": "jonswap", "hs": 0.01, "tp": 1}})"),
+         "wavemaker: give either spectrum"},
+        {"spectrum gamma", smallScene(R"(, "wavemaker": {"type": "flap", "x": 0.05, "depth": 0.1, "spectrum": {"type": "jonswap", "hs": 0.01, "tp": 1, "gamma": 0.5}})"),
+         "wavemaker.spectrum.gamma"},
+        {"damping flat", smallScene(R"(, "damping": {"x_start": 0.1, "x_end": 0.1})"), "damping.x_end"},
+        {"gauge without x", smallScene(R"(, "gauges": [{"name": "g1"}])"), "gauges[0].x"},
+        {"gauge names repeat", smallScene(R"(, "gauges": [{"name": "g1", "x": 0.1}, {"name": "g1", "x": 0.15}])"), "gauges[1].name"},
+        {"probe outside", smallScene(R"(, "probes": [{"name": "p", "position": [0.1, 0.1, 9]}])"), "probes[0].position"},
     };
 }
 
@@ -307,6 +322,41 @@ TEST(Cli, DivergenceExitsOneAndKeepsEarlierFrames) {
     EXPECT_NE(r.output.find("diverged"), std::string::npos) << r.output;
     EXPECT_NE(r.output.find("particle"), std::string::npos) << r.output;
     EXPECT_TRUE(fs::exists(out / "frame_00000.vtu"));
+}
+
+TEST(Cli, WaveGaugesAndProbesAreWrittenAsCsv) {
+    const std::string scene = R"({
+  "name": "tiny flume", "domain": {"min": [0, 0, 0], "max": [1.2, 0.3, 0.12], "periodic": [false, false, true]},
+  "particle_spacing": 0.03, "end_time": 0.2,
+  "materials": [{"name": "water", "density": 1000}],
+  "wavemaker": {"type": "piston", "x": 0.1, "depth": 0.15, "wave_height": 0.02, "period": 0.8, "ramp_time": 0.4},
+  "damping": {"x_start": 0.9, "x_end": 1.2},
+  "gauges": [{"name": "near", "x": 0.4, "z": 0.06}, {"name": "far", "x": 0.8}],
+  "probes": [{"name": "bed", "position": [0.5, 0.03, 0.06]}],
+  "blocks": [{"min": [0.1, 0, 0], "max": [1.2, 0.15, 0.12]}],
+  "output": {"fps": 10, "formats": ["csv"]}
+}
+)";
+    const fs::path out = scratch("waves_out");
+    const Result r = run(kTide + " run " + writeScene("waves", scene).string() + " --quiet --force --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    std::ifstream gauges(out / "gauges.csv"), probes(out / "probes.csv");
+    std::string line;
+    std::getline(gauges, line);
+    EXPECT_EQ(line, "time,near,far");
+    int rows = 0;
+    while (std::getline(gauges, line)) {
+        ++rows;
+        const double near = std::stod(line.substr(line.find(',') + 1));
+        EXPECT_NEAR(near, 0.15, 0.02) << line;  // the still level, give or take the first wave
+    }
+    EXPECT_EQ(rows, 3);  // t = 0, 0.1, 0.2: one row per frame
+    std::getline(probes, line);
+    EXPECT_EQ(line, "time,bed_p,bed_vx,bed_vy,bed_vz");
+    rows = 0;
+    while (std::getline(probes, line)) ++rows;
+    EXPECT_EQ(rows, 3);
+    expectFullStats(out);
 }
 
 TEST(Cli, ShippedScenesValidate) {

@@ -1,4 +1,5 @@
-// `tide run`: simulate a scene, writing frame k at simulated time k/fps, then stats.json.
+// `tide run`: simulate a scene, writing frame k at simulated time k/fps, then gauges.csv and
+// probes.csv (when the scene has gauges or probes) and stats.json.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -13,6 +14,7 @@
 #include <tide/io/scene.hpp>
 
 #include "commands.hpp"
+#include "measurements.hpp"
 #include "output_folder.hpp"
 #include "progress.hpp"
 
@@ -145,6 +147,7 @@ int runCommand(const RunOptions& o) {
                      scene.output.formats.end();
     std::uint64_t particleSteps = 0;
     std::uint32_t lost = 0;
+    Measurements measurements(scene);
     try {
         for (int frame = 0; frame <= frames; ++frame) {
             if (frame > 0) {
@@ -156,6 +159,7 @@ int runCommand(const RunOptions& o) {
                 const std::string bad = findDivergence(*world);
                 if (!bad.empty()) {
                     progress.finish();
+                    measurements.write(dir);  // the rows up to the last good frame
                     std::fprintf(stderr, "tide: the simulation diverged by step %llu (t = %.6f s): %s; frames up to %d are kept in %s\n",
                                  static_cast<unsigned long long>(world->stats().steps), world->time(), bad.c_str(),
                                  frame - 1, dir.string().c_str());
@@ -168,11 +172,13 @@ int runCommand(const RunOptions& o) {
                 pvd.add(frame / scene.output.fps, frameName(frame, io::Format::Vtu));
                 pvd.write();
             }
+            measurements.sample(*world, world->time());
             lost = std::max(lost, world->countEscapedParticles());
             progress.frame(world->time(), frame, world->particles().size(), particleSteps);
         }
         progress.finish();
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        measurements.write(dir);
         writeStats(dir / "stats.json", *world, wall, particleSteps, lost);
         if (!o.quiet)
             std::printf("%d frames of %u particles in %s (%.1f s wall, %.2f M particle-steps/s)\n", frames + 1,

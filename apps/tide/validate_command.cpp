@@ -58,6 +58,20 @@ int validateCommand(const std::string& file) {
     }
     if (!shapes.empty()) shapes += ")";
     std::printf("obstacles  %zu%s, emitters %zu\n", scene.obstacles.size(), shapes.c_str(), scene.emitters.size());
+    for (const WaveMakerDef& wm : scene.waveMakers) {
+        const char* type = wm.type == WaveMakerDef::Type::Flap ? "flap" : "piston";
+        if (wm.spectrum.type == WaveSpectrumDef::Type::None)
+            std::printf("waves      %s at x = %g m, depth %g m: regular, H %g m, T %g s, ramp %g s\n", type, wm.x, wm.depth,
+                        wm.waveHeight, wm.period, wm.rampTime);
+        else
+            std::printf("waves      %s at x = %g m, depth %g m: %s, Hs %g m, Tp %g s, %d components, ramp %g s\n", type,
+                        wm.x, wm.depth, wm.spectrum.type == WaveSpectrumDef::Type::Jonswap ? "JONSWAP" : "Pierson-Moskowitz",
+                        wm.spectrum.significantHeight, wm.spectrum.peakPeriod, wm.spectrum.components, wm.rampTime);
+    }
+    if (!scene.dampingZones.empty() || !scene.gauges.empty() || !scene.probes.empty())
+        std::printf("measuring  %zu damping zone%s, %zu gauge%s, %zu probe%s\n", scene.dampingZones.size(),
+                    scene.dampingZones.size() == 1 ? "" : "s", scene.gauges.size(), scene.gauges.size() == 1 ? "" : "s",
+                    scene.probes.size(), scene.probes.size() == 1 ? "" : "s");
     std::printf("total      up to %llu particles, about %.1f MiB\n",
                 static_cast<unsigned long long>(size.totalParticles), static_cast<double>(size.bytes) / (1 << 20));
     std::printf("ok\n");

@@ -122,4 +122,48 @@ struct EmitterDef {
     double end = std::numeric_limits<double>::infinity();  ///< s
 };
 
+
+/// A sea-state spectrum for irregular waves (WaveMakerDef::spectrum).
+struct WaveSpectrumDef {
+    enum class Type {
+        None,               ///< regular waves: WaveMakerDef::waveHeight and period
+        Jonswap,            ///< JONSWAP (Hasselmann et al. 1973), peak enhancement `gamma`
+        PiersonMoskowitz,   ///< Pierson & Moskowitz 1964 (JONSWAP with γ = 1)
+    };
+    Type type = Type::None;
+    float significantHeight = 0.0f;  ///< Hs = 4√m0, m
+    float peakPeriod = 0.0f;         ///< Tp, s
+    float gamma = 3.3f;              ///< JONSWAP peak enhancement factor, ≥ 1
+    std::uint32_t seed = 1;          ///< random phases (std::mt19937)
+    int components = 64;             ///< sinusoids the spectrum is split into
+    float minFrequency = 0.5f;       ///< lowest component, in units of the peak frequency 1/Tp
+    float maxFrequency = 3.0f;       ///< highest component, in units of the peak frequency
+};
+
+/// A wave paddle at the x = `x` end of a flume (the fluid lies on its +x side): a slab of
+/// boundary particles over the full height and width of the domain, moved by linear
+/// wavemaker theory (Biesel transfer function, Dean & Dalrymple §6.2).
+struct WaveMakerDef {
+    enum class Type {
+        Piston,  ///< translates along x
+        Flap,    ///< rotates about a hinge on the floor (y = domain min) at x
+    };
+    Type type = Type::Piston;
+    float x = 0.0f;             ///< paddle face at rest, m
+    float depth = 0.3f;         ///< still-water depth at the paddle, m
+    float waveHeight = 0.0f;    ///< H of regular waves, crest to trough, m
+    float period = 0.0f;        ///< T of regular waves, s
+    float rampTime = 2.0f;      ///< s; the stroke grows as ½(1 − cos(π t/ramp)) up to this time
+    WaveSpectrumDef spectrum;   ///< irregular waves instead of waveHeight/period, when its type is not None
+};
+
+/// A damping zone (sponge layer): velocities of particles between `xStart` and `xEnd` are
+/// relaxed towards zero after each step, by a factor rising quadratically from 0 at xStart
+/// to 1 at xEnd and beyond (Altomare et al. 2017, the DualSPHysics damping zone).
+struct DampingZoneDef {
+    float xStart = 0.0f;   ///< m, no damping here
+    float xEnd = 1.0f;     ///< m, full damping here (may be below xStart: the zone then faces −x)
+    float strength = 10.0f; ///< relaxation rate β at full damping, 1/s: v ← v (1 − β Δt s²)
+};
+
 }  // namespace tide

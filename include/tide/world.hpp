@@ -51,6 +51,13 @@ struct WorldStats {
     PhaseSeconds phaseSeconds;          ///< where the steps' wall time went
 };
 
+/// The fluid's state interpolated at a point (World::probe); NaN where no fluid is near.
+struct ProbeSample {
+    float density;       ///< kg/m³
+    float pressure;      ///< Pa
+    glm::vec3 velocity;  ///< m/s
+};
+
 /// Names of the solvers World accepts in SolverDef::method.
 std::vector<std::string> solverNames();
 
@@ -90,6 +97,24 @@ public:
     [[nodiscard]] const std::vector<ObstacleDef>& obstacles() const;
     /// Particles outside the container or inside an obstacle: should always be 0.
     [[nodiscard]] std::uint32_t countEscapedParticles() const;
+
+    /// Add a wave paddle (a moving boundary, see WaveMakerDef). Add it before blocks: blocks
+    /// leave out the lattice points behind its face. Throws std::invalid_argument naming the
+    /// field at fault.
+    void addWaveMaker(const WaveMakerDef& waveMaker);
+    [[nodiscard]] std::uint32_t waveMakerCount() const;
+    /// Horizontal displacement of wave maker `index`'s face at the still-water level at time t, m.
+    [[nodiscard]] float waveMakerDisplacement(std::uint32_t index, double t) const;
+    /// Add a damping zone that absorbs waves (see DampingZoneDef).
+    void addDampingZone(const DampingZoneDef& zone);
+
+    /// Free-surface height y at (x, z), m: where the SPH colour field of the fluid crosses ½
+    /// on the vertical line (DualSPHysics' gauge criterion); NaN where the line is dry.
+    [[nodiscard]] float surfaceHeight(float x, float z) const;
+    /// Density, pressure and velocity interpolated at a point (Shepard-normalised SPH sum).
+    [[nodiscard]] ProbeSample probe(const glm::vec3& point) const;
+    /// Σ of the fluid particles' masses, kg.
+    [[nodiscard]] double totalMass() const;
 
     /// Add a continuous source; returns its index for setEmitterActive().
     std::uint32_t addEmitter(const EmitterDef& emitter);

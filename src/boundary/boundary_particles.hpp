@@ -46,7 +46,12 @@ public:
 
     std::vector<glm::vec3> position;  ///< m
     std::vector<float> volume;        ///< V_b, m³
-    UniformGrid grid;                 ///< built once: boundary particles do not move
+    /// Velocity and acceleration of each boundary particle (zero for walls at rest). Moving
+    /// boundaries (wave paddles) set them every step; solvers read them only when `moving`.
+    std::vector<glm::vec3> velocity;      ///< v_b, m/s
+    std::vector<glm::vec3> acceleration;  ///< a_b, m/s²
+    bool moving = false;                  ///< whether any boundary particle moves
+    UniformGrid grid;                 ///< rebuilt whenever boundary particles move
     PeriodicBox periodic;             ///< the domain's periodic axes (set before sampling): the grid wraps there
 };
 

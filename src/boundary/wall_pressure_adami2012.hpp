@@ -2,8 +2,9 @@
 /// \file
 /// Pressure of boundary particles extrapolated from the fluid around them (Adami, Hu &
 /// Adams 2012, "A generalized wall boundary condition for smoothed particle hydrodynamics",
-/// J. Comput. Phys. 231, eq. 27, for walls at rest):
-///   p_b = (Σ_f p_f W_bf + ρ_f g·Σ_f (x_b − x_f) W_bf) / Σ_f W_bf,
+/// J. Comput. Phys. 231, eq. 27):
+///   p_b = (Σ_f p_f W_bf + ρ_f (g − a_b)·Σ_f (x_b − x_f) W_bf) / Σ_f W_bf,
+/// a_b the wall's acceleration (zero at rest; a wave paddle's otherwise),
 /// kept here as κ_b = p_b/ρ (the solvers' unit). Mirroring p_b = p_i (Akinci et al. 2012)
 /// gives a particle beside a vertical wall only the fluid half of the pressure gradient that
 /// carries its weight, so particles slide down walls and stir the whole tank; with the
@@ -37,6 +38,7 @@ public:
         weights_.resize(fluidNear.pairCount());
         parallelFor(n, threads, [&](std::uint32_t b) {
             const glm::vec3 xb = boundary.position[b];
+            const glm::vec3 g = boundary.moving ? gravity - boundary.acceleration[b] : gravity;
             float* weight = weights_.data() + fluidNear.offset(b);
             float weights = 0.0f, lift = 0.0f;
             for (const std::uint32_t f : fluidNear.of(b)) {
@@ -44,7 +46,7 @@ public:
                 const float wbf = w.value(glm::length(xbf));
                 *weight++ = wbf;
                 weights += wbf;
-                lift += glm::dot(gravity, xbf) * wbf;
+                lift += glm::dot(g, xbf) * wbf;
             }
             weightSum_[b] = weights;
             gravityTerm_[b] = lift;
@@ -67,7 +69,7 @@ public:
 
 private:
     std::vector<float> weightSum_;    ///< Σ_f W_bf
-    std::vector<float> gravityTerm_;  ///< g·Σ_f (x_b − x_f) W_bf, m²/s²
+    std::vector<float> gravityTerm_;  ///< (g − a_b)·Σ_f (x_b − x_f) W_bf, m²/s²
     std::vector<float> kappa_;        ///< κ_b = p_b/ρ, m²/s²
     std::vector<float> weights_;      ///< W_bf per pair of the fluid-near list
 };

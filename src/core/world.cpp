@@ -3,13 +3,16 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <stdexcept>
 
 #include <glm/geometric.hpp>
 
 #include "boundary/boundary_particles.hpp"
+#include "boundary/damping_zone.hpp"
 #include "boundary/obstacles.hpp"
 #include "boundary/wall_box.hpp"
+#include "core/field_sampling.hpp"
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
 #include "core/periodic_box.hpp"
@@ -19,6 +22,7 @@
 #include "solvers/solver.hpp"
 #include "sources/emitter.hpp"
 #include "sources/lattice.hpp"
+#include "sources/wave_maker.hpp"
 
 namespace tide {
 
@@ -104,6 +108,14 @@ struct World::Impl {
     NeighborList boundaryFluidNeighbors;  ///< fluid particles near each boundary particle
     std::vector<EmitterState> emitters;
     std::vector<ObstacleDef> obstacles;
+    /// A wave paddle and its boundary particles [begin, begin + rest.size()).
+    struct Paddle {
+        WaveMaker maker;
+        std::uint32_t begin;
+        std::vector<glm::vec3> rest;
+    };
+    std::vector<Paddle> paddles;
+    std::vector<DampingZoneDef> dampingZones;
     double time = 0.0;
     float soundSpeed = 0.0f;  ///< resolved at the first step when SolverDef::soundSpeed is 0
     int stepsSinceReorder = 0;
@@ -142,7 +154,21 @@ struct World::Impl {
     [[nodiscard]] bool clearOfObstacles(const glm::vec3& x) const {
         for (const ObstacleDef& o : obstacles)
             if (signedDistance(o, x) < 0.499f * def.particleSpacing) return false;
+        for (const Paddle& paddle : paddles)
+            if (paddle.maker.distanceInFront(time, x) < 0.499f * def.particleSpacing) return false;
         return true;
+    }
+
+    /// Puts the paddles' boundary particles where their motion has them at time t.
+    void moveBoundaries(double t) {
+        if (paddles.empty()) return;
+        for (const Paddle& paddle : paddles) {
+            const std::size_t n = paddle.rest.size();
+            paddle.maker.place(t, paddle.rest, std::span(boundary.position).subspan(paddle.begin, n),
+                               std::span(boundary.velocity).subspan(paddle.begin, n),
+                               std::span(boundary.acceleration).subspan(paddle.begin, n));
+        }
+        boundary.grid.build(boundary.position, h, threads, periodic);
     }
 
     [[nodiscard]] std::uint64_t countLattice(const Lattice& lattice) const {
@@ -335,9 +361,91 @@ std::uint32_t World::countEscapedParticles() const {
             out = out || (!w.periodic.periodic(axis) &&
                           !(x[axis] >= w.def.domainMin[axis] && x[axis] <= w.def.domainMax[axis]));
         for (const ObstacleDef& o : w.obstacles) out = out || signedDistance(o, x) < 0.0f;
+        for (const Impl::Paddle& paddle : w.paddles) out = out || paddle.maker.distanceInFront(w.time, x) < 0.0f;
         escaped += out;
     }
     return escaped;
+}
+
+void World::addWaveMaker(const WaveMakerDef& def) {
+    Impl& w = *impl_;
+    const WorldDef& d = w.def;
+    if (def.type != WaveMakerDef::Type::Piston && def.type != WaveMakerDef::Type::Flap)
+        throw std::invalid_argument("wavemaker.type: unknown type");
+    requireFinite("wavemaker.x", def.x);
+    if (!(def.x > d.domainMin.x && def.x < d.domainMax.x))
+        throw std::invalid_argument("wavemaker.x: must lie inside the domain (" + show(d.domainMin.x) + ", " +
+                                    show(d.domainMax.x) + "), got " + show(def.x));
+    requirePositive("wavemaker.depth", def.depth);
+    if (def.depth > d.domainMax.y - d.domainMin.y)
+        throw std::invalid_argument("wavemaker.depth: must not exceed the domain height " +
+                                    show(d.domainMax.y - d.domainMin.y) + ", got " + show(def.depth));
+    if (!(def.rampTime >= 0.0f) || !std::isfinite(def.rampTime))
+        throw std::invalid_argument("wavemaker.ramp_time: must be >= 0, got " + show(def.rampTime));
+    const WaveSpectrumDef& sp = def.spectrum;
+    if (sp.type == WaveSpectrumDef::Type::None) {
+        requirePositive("wavemaker.wave_height", def.waveHeight);
+        requirePositive("wavemaker.period", def.period);
+    } else {
+        requirePositive("wavemaker.spectrum.hs", sp.significantHeight);
+        requirePositive("wavemaker.spectrum.tp", sp.peakPeriod);
+        requireInRange("wavemaker.spectrum.gamma", sp.gamma, 1.0f, 20.0f);
+        if (sp.components < 1 || sp.components > 10000)
+            throw std::invalid_argument("wavemaker.spectrum.components: must be in [1, 10000], got " +
+                                        std::to_string(sp.components));
+        requirePositive("wavemaker.spectrum.min_frequency", sp.minFrequency);
+        if (!(sp.maxFrequency > sp.minFrequency) || !std::isfinite(sp.maxFrequency))
+            throw std::invalid_argument("wavemaker.spectrum.max_frequency: must exceed min_frequency (" +
+                                        show(sp.minFrequency) + "), got " + show(sp.maxFrequency));
+    }
+    const float g = glm::length(d.gravity);
+    if (!(g > 0.0f)) throw std::invalid_argument("wavemaker: needs gravity, got " + show(d.gravity));
+    WaveMaker maker(def, d.domainMin.y, g);
+    const int layers = static_cast<int>(std::ceil(w.h / d.particleSpacing));
+    std::vector<glm::vec3> rest = maker.sample(d.domainMin, d.domainMax, d.particleSpacing, layers);
+    const auto begin = static_cast<std::uint32_t>(w.boundary.position.size());
+    BoundaryParticles& b = w.boundary;
+    b.position.insert(b.position.end(), rest.begin(), rest.end());
+    b.volume.resize(b.position.size(), 1.0f / w.latticeSum);
+    b.velocity.resize(b.position.size(), glm::vec3(0.0f));
+    b.acceleration.resize(b.position.size(), glm::vec3(0.0f));
+    b.moving = true;
+    w.paddles.push_back({std::move(maker), begin, std::move(rest)});
+    w.moveBoundaries(w.time);
+}
+
+std::uint32_t World::waveMakerCount() const { return static_cast<std::uint32_t>(impl_->paddles.size()); }
+
+float World::waveMakerDisplacement(std::uint32_t index, double t) const {
+    if (index >= impl_->paddles.size())
+        throw std::invalid_argument("waveMaker: no wave maker " + std::to_string(index));
+    return static_cast<float>(impl_->paddles[index].maker.motion(t).x);
+}
+
+void World::addDampingZone(const DampingZoneDef& zone) {
+    requireFinite("damping.x_start", zone.xStart);
+    requireFinite("damping.x_end", zone.xEnd);
+    if (zone.xStart == zone.xEnd)
+        throw std::invalid_argument("damping.x_end: must differ from x_start, got " + show(zone.xEnd));
+    requirePositive("damping.strength", zone.strength);
+    impl_->dampingZones.push_back(zone);
+}
+
+float World::surfaceHeight(float x, float z) const {
+    const Impl& w = *impl_;
+    return freeSurfaceHeight(w.particles, w.materials, w.periodic, w.h, x, z);
+}
+
+ProbeSample World::probe(const glm::vec3& point) const {
+    const Impl& w = *impl_;
+    const FieldSample s = sampleField(w.particles, w.materials, w.periodic, w.h, point);
+    return {s.density, s.pressure, s.velocity};
+}
+
+double World::totalMass() const {
+    double sum = 0.0;
+    for (const float m : impl_->particles.mass) sum += m;
+    return sum;
 }
 
 std::uint32_t World::addEmitter(const EmitterDef& emitter) {
@@ -369,6 +477,7 @@ double World::step(double maxDt) {
     Impl& w = *impl_;
     PhaseClock clock(w.stats.phaseSeconds);
     w.resolveSoundSpeed();
+    w.moveBoundaries(w.time);
     w.rebuildNeighbors();
     clock.lap(Phase::NeighborSearch);
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
@@ -392,6 +501,8 @@ double World::step(double maxDt) {
         walls.enforce(w.particles, w.threads);
     }
     projectOutOfObstacles(w.obstacles, w.particles, margin, w.threads);
+    for (const Impl::Paddle& paddle : w.paddles) paddle.maker.project(w.time + dt, w.particles, margin, w.threads);
+    applyDampingZones(w.dampingZones, w.particles, dt, w.threads);
     if (w.periodic.any)
         parallelFor(w.particles.size(), w.threads, [&](std::uint32_t i) {
             w.particles.position[i] = w.periodic.wrap(w.particles.position[i]);

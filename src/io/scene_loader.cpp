@@ -61,6 +61,8 @@ World buildWorld(const Scene& scene) {
     World world(scene.world);
     for (const MaterialDef& m : scene.materials) world.addMaterial(m);
     for (const ObstacleDef& o : scene.obstacles) world.addObstacle(o);
+    for (const WaveMakerDef& w : scene.waveMakers) world.addWaveMaker(w);
+    for (const DampingZoneDef& d : scene.dampingZones) world.addDampingZone(d);
     for (std::size_t i = 0; i < scene.blocks.size(); ++i)
         if (world.addBlock(scene.blocks[i]) != AddStatus::Added)
             throw SceneError({"blocks[" + std::to_string(i) + "]: does not fit (outside the domain or over capacity)"});

@@ -400,6 +400,174 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
     return o;
 }
 
+/// "wavemaker": a piston or flap paddle making regular waves (wave_height, period) or an
+/// irregular sea (spectrum). Lengths scaled by `scale`.
+void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool domainOk) {
+    const std::string path = "wavemaker";
+    if (!r.object(j, path, {"type", "x", "depth", "wave_height", "period", "ramp_time", "spectrum"})) return;
+    WaveMakerDef w;
+    bool ok = true;
+    if (auto type = r.string(j, "type", path, true)) {
+        if (*type == "piston") w.type = WaveMakerDef::Type::Piston;
+        else if (*type == "flap") w.type = WaveMakerDef::Type::Flap;
+        else {
+            r.fail(join(path, "type"), "must be \"piston\" or \"flap\", got \"" + *type + "\"" +
+                                           suggestion(*type, {"piston", "flap"}));
+            ok = false;
+        }
+    } else {
+        ok = false;
+    }
+    const auto x = r.number(j, "x", path, true, -1e6, 1e6);
+    const auto depth = r.number(j, "depth", path, true, 0.0, 1e300, true);
+    const auto ramp = r.number(j, "ramp_time", path, false, 0.0, 1e300);
+    ok = ok && x && depth;
+    if (x) w.x = static_cast<float>(*x) * scale;
+    if (depth) w.depth = static_cast<float>(*depth) * scale;
+    if (ramp) w.rampTime = static_cast<float>(*ramp);
+    const WorldDef& world = scene.world;
+    if (x && domainOk && !(w.x > world.domainMin.x && w.x < world.domainMax.x)) {
+        std::ostringstream msg;
+        msg << "must lie inside the domain (" << world.domainMin.x / scale << ", " << world.domainMax.x / scale
+            << "), got " << *x;
+        r.fail(join(path, "x"), msg.str());
+        ok = false;
+    }
+    if (depth && domainOk && w.depth > world.domainMax.y - world.domainMin.y) {
+        std::ostringstream msg;
+        msg << "must not exceed the domain height " << (world.domainMax.y - world.domainMin.y) / scale << ", got " << *depth;
+        r.fail(join(path, "depth"), msg.str());
+        ok = false;
+    }
+    const bool regular = j.contains("wave_height") || j.contains("period");
+    if (j.contains("spectrum")) {
+        if (regular) {
+            r.fail(path, "give either spectrum (irregular waves) or wave_height and period (regular waves), not both");
+            return;
+        }
+        const std::string sp = join(path, "spectrum");
+        const json& s = j.at("spectrum");
+        if (!r.object(s, sp, {"type", "hs", "tp", "gamma", "seed", "components", "min_frequency", "max_frequency"}))
+            return;
+        WaveSpectrumDef& d = w.spectrum;
+        if (auto type = r.string(s, "type", sp, true)) {
+            if (*type == "jonswap") d.type = WaveSpectrumDef::Type::Jonswap;
+            else if (*type == "pierson_moskowitz") d.type = WaveSpectrumDef::Type::PiersonMoskowitz;
+            else {
+                r.fail(join(sp, "type"), "must be \"jonswap\" or \"pierson_moskowitz\", got \"" + *type + "\"" +
+                                             suggestion(*type, {"jonswap", "pierson_moskowitz"}));
+                ok = false;
+            }
+        } else {
+            ok = false;
+        }
+        const auto hs = r.number(s, "hs", sp, true, 0.0, 1e300, true);
+        const auto tp = r.number(s, "tp", sp, true, 0.0, 1e300, true);
+        ok = ok && hs && tp;
+        if (hs) d.significantHeight = static_cast<float>(*hs) * scale;
+        if (tp) d.peakPeriod = static_cast<float>(*tp);
+        if (auto v = r.number(s, "gamma", sp, false, 1.0, 20.0)) d.gamma = static_cast<float>(*v);
+        if (auto v = r.number(s, "seed", sp, false, 0.0, 4294967295.0)) {
+            if (*v != std::floor(*v)) r.fail(join(sp, "seed"), "must be a whole number, got " + show(s.at("seed")));
+            d.seed = static_cast<std::uint32_t>(*v);
+        }
+        if (auto v = r.number(s, "components", sp, false, 1.0, 10000.0)) {
+            if (*v != std::floor(*v)) r.fail(join(sp, "components"), "must be a whole number, got " + show(s.at("components")));
+            d.components = static_cast<int>(*v);
+        }
+        if (auto v = r.number(s, "min_frequency", sp, false, 0.0, 100.0, true)) d.minFrequency = static_cast<float>(*v);
+        if (auto v = r.number(s, "max_frequency", sp, false, 0.0, 100.0, true)) d.maxFrequency = static_cast<float>(*v);
+        if (!(d.maxFrequency > d.minFrequency)) {
+            r.fail(join(sp, "max_frequency"), "must exceed min_frequency");
+            ok = false;
+        }
+    } else {
+        const auto height = r.number(j, "wave_height", path, true, 0.0, 1e300, true);
+        const auto period = r.number(j, "period", path, true, 0.0, 1e300, true);
+        ok = ok && height && period;
+        if (height) w.waveHeight = static_cast<float>(*height) * scale;
+        if (period) w.period = static_cast<float>(*period);
+        if (height && depth && w.waveHeight >= w.depth) {
+            r.fail(join(path, "wave_height"), "must be below the depth " + show(j.at("depth")) + ", got " +
+                                                  show(j.at("wave_height")));
+            ok = false;
+        }
+    }
+    if (ok) scene.waveMakers.push_back(w);
+}
+
+/// "damping": one zone or a list of zones.
+void readDamping(Reader& r, const json& j, Scene& scene, float scale) {
+    const auto readZone = [&](const json& z, const std::string& path) {
+        if (!r.object(z, path, {"x_start", "x_end", "strength"})) return;
+        DampingZoneDef d;
+        const auto start = r.number(z, "x_start", path, true, -1e6, 1e6);
+        const auto end = r.number(z, "x_end", path, true, -1e6, 1e6);
+        if (auto v = r.number(z, "strength", path, false, 0.0, 1e300, true)) d.strength = static_cast<float>(*v);
+        if (!start || !end) return;
+        if (*start == *end) {
+            r.fail(join(path, "x_end"), "must differ from x_start, got " + show(z.at("x_end")));
+            return;
+        }
+        d.xStart = static_cast<float>(*start) * scale;
+        d.xEnd = static_cast<float>(*end) * scale;
+        scene.dampingZones.push_back(d);
+    };
+    if (j.is_array())
+        for (std::size_t i = 0; i < j.size(); ++i) readZone(j[i], indexed("damping", i));
+    else
+        readZone(j, "damping");
+}
+
+/// A gauge or probe name: a CSV column header, so non-empty, unique and free of commas, quotes and line breaks.
+bool checkColumnName(Reader& r, const std::string& name, const std::string& path, std::vector<std::string>& used) {
+    if (name.empty() || name.find_first_of(",\"\n\r") != std::string::npos) {
+        r.fail(join(path, "name"), "must be non-empty, without commas, quotes or line breaks, got \"" + name + "\"");
+        return false;
+    }
+    if (std::find(used.begin(), used.end(), name) != used.end()) {
+        r.fail(join(path, "name"), "\"" + name + "\" is already used by another gauge or probe");
+        return false;
+    }
+    used.push_back(name);
+    return true;
+}
+
+void readGaugesAndProbes(Reader& r, const json& root, Scene& scene, float scale, bool domainOk) {
+    std::vector<std::string> used;
+    const WorldDef& w = scene.world;
+    const json& gauges = r.array(root, "gauges", "", false);
+    for (std::size_t i = 0; i < gauges.size(); ++i) {
+        const std::string path = indexed("gauges", i);
+        if (!r.object(gauges[i], path, {"name", "x", "z"})) continue;
+        const auto name = r.string(gauges[i], "name", path, true);
+        const auto x = r.number(gauges[i], "x", path, true, -1e6, 1e6);
+        const auto z = r.number(gauges[i], "z", path, false, -1e6, 1e6);
+        if (!name || !x || !checkColumnName(r, *name, path, used)) continue;
+        GaugeDef g{*name, static_cast<float>(*x) * scale, z ? static_cast<float>(*z) * scale : 0.5f * (w.domainMin.z + w.domainMax.z)};
+        if (domainOk && (g.x < w.domainMin.x || g.x > w.domainMax.x || g.z < w.domainMin.z || g.z > w.domainMax.z)) {
+            r.fail(path, "(x, z) = (" + show(gauges[i].at("x")) + ", " + (z ? show(gauges[i].at("z")) : std::string("centre")) +
+                             ") lies outside the domain");
+            continue;
+        }
+        scene.gauges.push_back(g);
+    }
+    const json& probes = r.array(root, "probes", "", false);
+    for (std::size_t i = 0; i < probes.size(); ++i) {
+        const std::string path = indexed("probes", i);
+        if (!r.object(probes[i], path, {"name", "position"})) continue;
+        const auto name = r.string(probes[i], "name", path, true);
+        const auto position = r.vec3(probes[i], "position", path, true);
+        if (!name || !position || !checkColumnName(r, *name, path, used)) continue;
+        const glm::vec3 x = *position * scale;
+        if (domainOk && !boxInside(x, x, w)) {
+            r.fail(join(path, "position"), "lies outside the domain, got " + showVec(*position));
+            continue;
+        }
+        scene.probes.push_back({*name, x});
+    }
+}
+
 }  // namespace
 
 SceneError::SceneError(std::vector<std::string> list)
@@ -431,7 +599,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     Reader r;
     Scene scene;
     if (!r.object(root, "", {"name", "unit_scale", "domain", "gravity", "particle_spacing", "end_time", "solver",
-                             "materials", "blocks", "emitters", "obstacles", "output", "camera"}))
+                             "materials", "blocks", "emitters", "obstacles", "wavemaker", "damping", "gauges", "probes", "output", "camera"}))
         throw SceneError(r.problems);
 
     float scale = 1.0f;
@@ -489,6 +657,10 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     for (std::size_t i = 0; i < obstacles.size(); ++i)
         if (auto o = readObstacle(r, obstacles[i], indexed("obstacles", i), scale, baseDirectory))
             scene.obstacles.push_back(std::move(*o));
+
+    if (root.contains("wavemaker")) readWaveMaker(r, root["wavemaker"], scene, scale, domainOk);
+    if (root.contains("damping")) readDamping(r, root["damping"], scene, scale);
+    readGaugesAndProbes(r, root, scene, scale, domainOk);
 
     const json& blocks = r.array(root, "blocks", "", false);
     for (std::size_t i = 0; i < blocks.size(); ++i) {

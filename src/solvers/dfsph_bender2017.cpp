@@ -73,6 +73,7 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
     alpha_.resize(n);
     fluidGradient_.resize(n);
     wallGradient_.resize(n);
+    if (ctx.boundary.moving) wallVelocityRate_.resize(n);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         glm::vec3 fluidGrad(0.0f), wallGrad(0.0f);
@@ -84,8 +85,13 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
             sumSquares += glm::dot(g, g);
         }
         f = wallF_.of(ctx.boundaryNeighbors, i).data();
-        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-            wallGrad += (ctx.boundary.volume[b] * *f++) * ctx.delta(xi, ctx.boundary.position[b]);
+        float wallRate = 0.0f;
+        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+            const glm::vec3 g = (ctx.boundary.volume[b] * *f++) * ctx.delta(xi, ctx.boundary.position[b]);
+            wallGrad += g;
+            if (ctx.boundary.moving) wallRate += glm::dot(ctx.boundary.velocity[b], g);
+        }
+        if (ctx.boundary.moving) wallVelocityRate_[i] = wallRate;
         fluidGradient_[i] = fluidGrad;
         wallGradient_[i] = wallGrad;
         const glm::vec3 boundaryGrad = ctx.materials[p.material[i]].restDensity * wallGrad;
@@ -113,7 +119,10 @@ float DfsphBender2017::densityRate(const StepContext& ctx, PairVector delta, std
         const glm::vec4 xj = positionMass_[j];
         rate += (xj.w * f[k]) * glm::dot(vi - p.velocity[j], delta(xi, glm::vec3(xj)));
     }
-    return rate + ctx.materials[p.material[i]].restDensity * glm::dot(vi, wallGradient_[i]);
+    // Walls: Σ_b Ψ_b (v_i − v_b)·∇W_ib, the v_b part kept from computeAlpha.
+    const float wall = ctx.boundary.moving ? glm::dot(vi, wallGradient_[i]) - wallVelocityRate_[i]
+                                           : glm::dot(vi, wallGradient_[i]);
+    return rate + ctx.materials[p.material[i]].restDensity * wall;
 }
 
 template <class PairVector>
@@ -233,6 +242,11 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
     boundaryKappa_.assign(nb, 0.0f);
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
                   ctx.supportRadius, ctx.threads);
+    // Moving walls are where they will be at the end of the step when the predicted densities are.
+    if (ctx.boundary.moving)
+        parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
+            wallPositionVolume_[b] = glm::vec4(ctx.boundary.position[b] + dt * ctx.boundary.velocity[b], ctx.boundary.volume[b]);
+        });
     // Applies the change of κ (fluid, then walls from it) as a velocity change.
     auto push = [&] {
         wall_.update(ctx.boundaryFluidNeighbors, kappa, ctx.threads);

@@ -13,7 +13,8 @@
 /// compression-only increments stop once the mean is met and leave it at ~70 %.
 /// Boundaries are Akinci et al. 2012 particles (Ψ_b = ρ0_i V_b) pushing with
 /// Ψ_b (κ_i + κ_b)/ρ_i ∇W_ib: κ_b mirrors κ_i in the divergence solve and is the wall pressure
-/// of Adami et al. 2012 in the density solve. Cubic spline kernel, SolverDef::viscosity (Morris 1997),
+/// of Adami et al. 2012 in the density solve. Moving boundaries (wave paddles) enter the
+/// density rate with (v_i − v_b) and the predicted density at x_b + Δt v_b. Cubic spline kernel, SolverDef::viscosity (Morris 1997),
 /// CFL time step (no sound speed: the solver, not the time step, keeps the fluid incompressible).
 
 #include <vector>
@@ -38,7 +39,7 @@ private:
     /// Densities, kernel factors of this step's pairs and the packed positions the iterations read.
     void prepare(StepContext& ctx);
     void computeAlpha(StepContext& ctx);
-    /// Σ_j m_j (v_i − v_j)·∇W_ij + Σ_b Ψ_b v_i·∇W_ib: the rate of change of ρ_i (walls at rest).
+    /// Σ_j m_j (v_i − v_j)·∇W_ij + Σ_b Ψ_b (v_i − v_b)·∇W_ib: the rate of change of ρ_i.
     template <class PairVector>
     [[nodiscard]] float densityRate(const StepContext& ctx, PairVector delta, std::uint32_t i) const;
     /// ρ*_i: the density at the positions predicted_ holds (x + Δt v), over this step's
@@ -72,6 +73,7 @@ private:
     PairKernels wallF_;                      ///< W'(r)/r per fluid–boundary pair
     std::vector<glm::vec3> fluidGradient_;   ///< Σ_j m_j ∇W_ij
     std::vector<glm::vec3> wallGradient_;    ///< Σ_b V_b ∇W_ib
+    std::vector<float> wallVelocityRate_;    ///< Σ_b V_b v_b·∇W_ib (moving walls only)
     std::vector<glm::vec4> positionMass_;    ///< (x_j, m_j)
     std::vector<glm::vec4> positionK_;       ///< (x_j, m_j k_j/ρ_j) of one iteration
     std::vector<glm::vec4> predicted_;       ///< (x_j + Δt v_j, m_j) of one iteration

@@ -36,6 +36,9 @@ constexpr Entry kModels[] = {
 /// v_b = 0 the fluid slips instead: it sticks to the first boundary layer, half a spacing
 /// inside the wall (10 % of the centre-line speed in the Poiseuille test).
 inline glm::vec3 wallVelocity(const glm::vec3& vi) { return -vi; }
+/// The same for a moving wall (a wave paddle) of velocity v_b: v_i mirrored in the wall's
+/// frame, 2 v_b − v_i. (Walls at rest keep the form above, so their sums stay bit-identical.)
+inline glm::vec3 wallVelocity(const glm::vec3& vi, const glm::vec3& vb) { return 2.0f * vb - vi; }
 
 void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
     const ParticleStore& p = ctx.particles;
@@ -59,7 +62,8 @@ void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
             for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
                 const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
                 const float r = glm::length(rib);
-                const float vr = glm::dot(vi - wallVelocity(vi), rib);
+                const glm::vec3 vb = ctx.boundary.moving ? wallVelocity(vi, ctx.boundary.velocity[b]) : wallVelocity(vi);
+                const float vr = glm::dot(vi - vb, rib);
                 wallSum += (ctx.boundary.volume[b] * vr / (r * r + 0.01f * h2)) * w.gradient(rib, r);
             }
             sum += (ctx.materials[p.material[i]].restDensity / p.density[i] * mui / p.density[i]) * wallSum;
@@ -86,12 +90,23 @@ void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
         }
         // Walls, mirrored: m_b = Ψ_b = ρ0_i V_b, ρ_b = ρ_i, μ_b = μ_i; v_b no-slip.
         if (mui > 0.0f) {
-            float wallWeight = 0.0f;
-            for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-                const float r = glm::length(ctx.delta(xi, ctx.boundary.position[b]));
-                wallWeight += ctx.boundary.volume[b] * r * w.derivative(r) / (r * r + 0.01f * h2);
+            const float scale = ctx.materials[p.material[i]].restDensity * 2.0f * mui / p.density[i];
+            if (!ctx.boundary.moving) {
+                float wallWeight = 0.0f;
+                for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+                    const float r = glm::length(ctx.delta(xi, ctx.boundary.position[b]));
+                    wallWeight += ctx.boundary.volume[b] * r * w.derivative(r) / (r * r + 0.01f * h2);
+                }
+                sum += (scale * wallWeight) * (vi - wallVelocity(vi));
+            } else {
+                glm::vec3 wallSum(0.0f);
+                for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+                    const float r = glm::length(ctx.delta(xi, ctx.boundary.position[b]));
+                    wallSum += (ctx.boundary.volume[b] * r * w.derivative(r) / (r * r + 0.01f * h2)) *
+                               (vi - wallVelocity(vi, ctx.boundary.velocity[b]));
+                }
+                sum += scale * wallSum;
             }
-            sum += (ctx.materials[p.material[i]].restDensity * 2.0f * mui / p.density[i] * wallWeight) * (vi - wallVelocity(vi));
         }
         accel[i] += sum / p.density[i];
     });
@@ -113,10 +128,16 @@ void addMuller2003(const StepContext& ctx, std::span<glm::vec3> accel) {
         }
         // Walls, mirrored as in the classic pressure sum: m_b/ρ_b = V_b, μ_b = μ_i; v_b no-slip.
         if (mui > 0.0f) {
-            float wallWeight = 0.0f;
-            for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-                wallWeight += ctx.boundary.volume[b] * viscosity.laplacian(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
-            sum += (mui * wallWeight) * (wallVelocity(vi) - vi);
+            if (!ctx.boundary.moving) {
+                float wallWeight = 0.0f;
+                for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
+                    wallWeight += ctx.boundary.volume[b] * viscosity.laplacian(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
+                sum += (mui * wallWeight) * (wallVelocity(vi) - vi);
+            } else {
+                for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
+                    sum += (mui * ctx.boundary.volume[b] * viscosity.laplacian(glm::length(ctx.delta(xi, ctx.boundary.position[b])))) *
+                           (wallVelocity(vi, ctx.boundary.velocity[b]) - vi);
+            }
         }
         accel[i] += sum / p.density[i];
     });

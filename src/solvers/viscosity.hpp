@@ -14,6 +14,7 @@
 /// the fluid particle (μ_b = μ_i, ρ_b = ρ_i; Akinci et al. 2012) and its velocity mirrored
 /// through the wall (v_b = −v_i, after Morris et al. 1997), so the fluid sticks to the wall
 /// surface (no slip): a channel flow has the parabolic profile (tests/test_poiseuille.cpp).
+/// Moving walls (BoundaryParticles::moving) mirror it in the wall's frame: 2 v_b − v_i.
 
 #include <span>
 #include <string_view>

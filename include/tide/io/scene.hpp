@@ -31,6 +31,19 @@ struct CameraDef {
     float fovDegrees = 45.0f;                 ///< vertical field of view
 };
 
+/// A wave gauge: the free-surface height y at (x, z), written to gauges.csv every frame.
+struct GaugeDef {
+    std::string name;
+    float x = 0.0f;  ///< m
+    float z = 0.0f;  ///< m
+};
+
+/// A probe: pressure and velocity at a point, written to probes.csv every frame.
+struct ProbeDef {
+    std::string name;
+    glm::vec3 position{0.0f};  ///< m
+};
+
 /// A parsed, validated scene. Lengths are already scaled to metres (`unit_scale`).
 struct Scene {
     std::string name;
@@ -40,6 +53,10 @@ struct Scene {
     std::vector<ObstacleDef> obstacles;
     std::vector<BlockDef> blocks;             ///< material indices resolved from names
     std::vector<EmitterDef> emitters;
+    std::vector<WaveMakerDef> waveMakers;     ///< key "wavemaker"
+    std::vector<DampingZoneDef> dampingZones; ///< key "damping"
+    std::vector<GaugeDef> gauges;
+    std::vector<ProbeDef> probes;
     OutputDef output;
     std::optional<CameraDef> camera;          ///< empty: renderers choose a view of the container
 };
@@ -72,7 +89,7 @@ inline constexpr std::uint64_t kBytesPerParticle = 320;
 /// Memory this machine can still give, bytes (MemAvailable).
 std::uint64_t availableMemoryBytes();
 
-/// Create the world a scene describes: materials, obstacles, blocks, emitters.
+/// Create the world a scene describes: materials, obstacles, wave makers, damping zones, blocks, emitters.
 World buildWorld(const Scene& scene);
 
 }  // namespace tide::io

@@ -1,0 +1,78 @@
+#pragma once
+/// \file
+/// A wave paddle: a slab of boundary particles at one end of a flume, moved by a prescribed
+/// motion from linear wavemaker theory (sources/wave_theory.hpp).
+///
+/// The paddle is ceil(h/s) lattice layers thick behind its face (a complete kernel support,
+/// like the wall shell) and spans the domain from the floor to the top and across z. Each
+/// step the World places its particles at the pose of the step's start time and gives them
+/// the paddle's velocity and acceleration, which the solvers use as a moving wall: the
+/// density rate sees (v_i − v_b), no-slip viscosity mirrors 2v_b − v_i, the wall pressure of
+/// Adami et al. 2012 (eq. 27) takes g − a_b, and dfsph's predicted density x_b + Δt v_b.
+/// After the step, particles that slipped behind the face (at the pose of the step's end)
+/// are put back in front of it, losing their velocity into the paddle relative to it.
+///
+/// Piston: the face translates by X(t) along x. Flap: the paddle rotates about a hinge on the
+/// floor at the face by θ = X(t)/d (X the stroke at the still-water level; the small-angle
+/// form, as the linear theory assumes). X(t) = ramp(t) Σ_n A_n sin(ω_n t + φ_n).
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include <tide/defs.hpp>
+#include <tide/particles.hpp>
+
+#include "core/periodic_box.hpp"
+#include "sources/wave_theory.hpp"
+
+namespace tide {
+
+class WaveMaker {
+public:
+    /// `floor` is the y of the bed (the flap's hinge); g the magnitude of gravity.
+    WaveMaker(const WaveMakerDef& def, float floor, double g);
+
+    /// Displacement of the face at the still-water level X(t), m, and its two time derivatives.
+    struct Motion {
+        double x, v, a;
+    };
+    [[nodiscard]] Motion motion(double t) const;
+
+    /// Lattice points of the paddle at rest: `layers` layers behind the face, the domain's
+    /// lattice in y (from the floor up) and z (stretched to the width, as the wall shell is).
+    [[nodiscard]] std::vector<glm::vec3> sample(const glm::vec3& domainMin, const glm::vec3& domainMax, float spacing,
+                                                int layers) const;
+
+    /// Positions, velocities and accelerations at time t of particles whose rest positions are `rest`.
+    void place(double t, std::span<const glm::vec3> rest, std::span<glm::vec3> position, std::span<glm::vec3> velocity,
+               std::span<glm::vec3> acceleration) const;
+
+    /// Distance of x in front of the face at time t (negative behind it), m.
+    [[nodiscard]] float distanceInFront(double t, const glm::vec3& x) const;
+
+    /// Puts particles behind the face at time t back `margin` in front of it, without
+    /// velocity into the paddle relative to it.
+    void project(double t, ParticleStore& particles, float margin, int threads) const;
+
+    [[nodiscard]] const WaveMakerDef& def() const { return def_; }
+    [[nodiscard]] const std::vector<waves::PaddleComponent>& components() const { return components_; }
+
+private:
+    /// The face at time t: a point on it, its normal (into the fluid), and the paddle's
+    /// rotation angle and its rates (flap) or translation (piston).
+    struct Pose {
+        glm::vec3 point, normal;
+        Motion m;
+        double angle, rate, angularAcceleration;
+    };
+    [[nodiscard]] Pose pose(double t) const;
+
+    WaveMakerDef def_;
+    glm::vec3 hinge_;
+    std::vector<waves::PaddleComponent> components_;
+};
+
+}  // namespace tide

@@ -1,0 +1,105 @@
+#include "sources/wave_theory.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <stdexcept>
+
+namespace tide::waves {
+
+double waveNumber(double omega, double depth, double g) {
+    if (!(omega > 0.0) || !(depth > 0.0) || !(g > 0.0))
+        throw std::invalid_argument("waveNumber: ω, depth and g must be > 0");
+    // Deep water k = ω²/g, shallow water k = ω/√(gd); start from the larger (Newton on
+    // f(k) = g k tanh(kd) − ω², convex and increasing, then converges monotonically from above).
+    double k = std::max(omega * omega / g, omega / std::sqrt(g * depth));
+    for (int iteration = 0; iteration < 100; ++iteration) {
+        const double t = std::tanh(k * depth);
+        const double f = g * k * t - omega * omega;
+        const double df = g * t + g * k * depth * (1.0 - t * t);
+        const double step = f / df;
+        k -= step;
+        if (std::abs(step) <= 1e-12 * k) break;
+    }
+    return k;
+}
+
+double pistonHeightToStroke(double kd) {
+    return 2.0 * (std::cosh(2.0 * kd) - 1.0) / (std::sinh(2.0 * kd) + 2.0 * kd);
+}
+
+double flapHeightToStroke(double kd) {
+    return 4.0 * (std::sinh(kd) / kd) * (kd * std::sinh(kd) - std::cosh(kd) + 1.0) / (std::sinh(2.0 * kd) + 2.0 * kd);
+}
+
+namespace {
+double transfer(WaveMakerDef::Type type, double kd) {
+    return type == WaveMakerDef::Type::Flap ? flapHeightToStroke(kd) : pistonHeightToStroke(kd);
+}
+}  // namespace
+
+JonswapSpectrum::JonswapSpectrum(double significantHeight, double peakPeriod, double gamma)
+    : fp_(1.0 / peakPeriod), gamma_(gamma) {
+    // ∫ shape df by the midpoint rule in u = fp/f (df = −fp/u² du), u ∈ (0, 1/0.05]: the shape
+    // falls off as f⁻⁵ = (u/fp)⁵ for large f and as exp(−5/4 u⁴) for small f.
+    constexpr int kSteps = 200000;
+    const double uMax = 20.0;
+    const double du = uMax / kSteps;
+    double integral = 0.0;
+    for (int s = 0; s < kSteps; ++s) {
+        const double u = (s + 0.5) * du;
+        integral += shape(fp_ / u) * fp_ / (u * u) * du;
+    }
+    scale_ = significantHeight * significantHeight / 16.0 / integral;
+}
+
+double JonswapSpectrum::shape(double f) const {
+    if (!(f > 0.0)) return 0.0;
+    const double sigma = f <= fp_ ? 0.07 : 0.09;
+    const double r = std::exp(-(f - fp_) * (f - fp_) / (2.0 * sigma * sigma * fp_ * fp_));
+    const double x = fp_ / f;
+    return std::pow(f, -5.0) * std::exp(-1.25 * x * x * x * x) * std::pow(gamma_, r);
+}
+
+double JonswapSpectrum::operator()(double f) const { return scale_ * shape(f); }
+
+std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g) {
+    const double d = def.depth;
+    std::vector<PaddleComponent> out;
+    if (def.spectrum.type == WaveSpectrumDef::Type::None) {
+        PaddleComponent c;
+        c.omega = 2.0 * std::numbers::pi / def.period;
+        c.waveAmplitude = 0.5 * def.waveHeight;
+        c.amplitude = c.waveAmplitude / transfer(def.type, waveNumber(c.omega, d, g) * d);
+        out.push_back(c);
+        return out;
+    }
+    const WaveSpectrumDef& s = def.spectrum;
+    const double gamma = s.type == WaveSpectrumDef::Type::PiersonMoskowitz ? 1.0 : s.gamma;
+    const JonswapSpectrum spectrum(s.significantHeight, s.peakPeriod, gamma);
+    const double fp = 1.0 / s.peakPeriod;
+    const double fLo = s.minFrequency * fp, fHi = s.maxFrequency * fp;
+    const double df = (fHi - fLo) / s.components;
+    // Phases from the raw 32-bit outputs of mt19937 (specified exactly by the standard), not
+    // std::uniform_real_distribution (whose algorithm differs between libraries).
+    std::mt19937 random(s.seed);
+    for (int n = 0; n < s.components; ++n) {
+        const double f = fLo + (n + 0.5) * df;
+        PaddleComponent c;
+        c.omega = 2.0 * std::numbers::pi * f;
+        c.waveAmplitude = std::sqrt(2.0 * spectrum(f) * df);
+        c.amplitude = c.waveAmplitude / transfer(def.type, waveNumber(c.omega, d, g) * d);
+        c.phase = 2.0 * std::numbers::pi * (static_cast<double>(random()) / 4294967296.0);
+        out.push_back(c);
+    }
+    return out;
+}
+
+Ramp ramp(double t, double rampTime) {
+    if (!(rampTime > 0.0) || t >= rampTime) return {t >= 0.0 ? 1.0 : 0.0, 0.0, 0.0};
+    if (t <= 0.0) return {0.0, 0.0, 0.0};
+    const double a = std::numbers::pi / rampTime;
+    return {0.5 * (1.0 - std::cos(a * t)), 0.5 * a * std::sin(a * t), 0.5 * a * a * std::cos(a * t)};
+}
+
+}  // namespace tide::waves

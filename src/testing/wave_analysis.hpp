@@ -1,0 +1,101 @@
+#pragma once
+/// \file
+/// Analysis of wave-gauge records (free-surface height sampled at a fixed interval), shared
+/// by the wave tests and benchmarks: zero up-crossing periods and heights, the complex
+/// amplitude at one frequency, and the incident/reflected split of two gauges.
+
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <numbers>
+#include <vector>
+
+namespace tide::waves {
+
+/// A gauge record: heights η[k] at times t0 + k·dt.
+struct Record {
+    double t0 = 0.0, dt = 0.01;
+    std::vector<double> eta;
+    [[nodiscard]] double time(std::size_t k) const { return t0 + dt * static_cast<double>(k); }
+};
+
+/// The part of a record with from ≤ t < to.
+inline Record window(const Record& r, double from, double to) {
+    Record out{0.0, r.dt, {}};
+    bool first = true;
+    for (std::size_t k = 0; k < r.eta.size(); ++k)
+        if (r.time(k) >= from - 1e-9 && r.time(k) < to - 1e-9) {
+            if (first) out.t0 = r.time(k), first = false;
+            out.eta.push_back(r.eta[k]);
+        }
+    return out;
+}
+
+inline double mean(const Record& r) {
+    double sum = 0.0;
+    for (const double e : r.eta) sum += e;
+    return r.eta.empty() ? 0.0 : sum / static_cast<double>(r.eta.size());
+}
+
+/// Zero up-crossing analysis about the record's mean (the standard wave-by-wave definition,
+/// e.g. Goda, "Random seas and design of maritime structures", §2.1): the times of up-crossings
+/// (linearly interpolated), and the crest-to-trough height of each wave between two of them.
+struct Crossings {
+    std::vector<double> times;
+    std::vector<double> heights;
+    [[nodiscard]] double meanPeriod() const {
+        return times.size() < 2 ? 0.0 : (times.back() - times.front()) / static_cast<double>(times.size() - 1);
+    }
+    [[nodiscard]] double meanHeight() const {
+        double sum = 0.0;
+        for (const double h : heights) sum += h;
+        return heights.empty() ? 0.0 : sum / static_cast<double>(heights.size());
+    }
+};
+
+inline Crossings upCrossings(const Record& r) {
+    Crossings c;
+    const double m = mean(r);
+    std::size_t last = 0;
+    for (std::size_t k = 1; k < r.eta.size(); ++k) {
+        const double a = r.eta[k - 1] - m, b = r.eta[k] - m;
+        if (a < 0.0 && b >= 0.0) {
+            c.times.push_back(r.time(k - 1) + r.dt * (-a / (b - a)));
+            if (c.times.size() >= 2) {
+                double hi = -1e30, lo = 1e30;
+                for (std::size_t j = last; j <= k; ++j) hi = std::max(hi, r.eta[j]), lo = std::min(lo, r.eta[j]);
+                c.heights.push_back(hi - lo);
+            }
+            last = k;
+        }
+    }
+    return c;
+}
+
+/// Complex amplitude A at angular frequency ω, η ≈ Re(A e^{iωt}) (A = (2/N) Σ η_k e^{−iωt_k};
+/// exact for a record of whole periods).
+inline std::complex<double> amplitudeAt(const Record& r, double omega) {
+    std::complex<double> sum = 0.0;
+    const double m = mean(r);
+    for (std::size_t k = 0; k < r.eta.size(); ++k)
+        sum += (r.eta[k] - m) * std::exp(std::complex<double>(0.0, -omega * r.time(k)));
+    return 2.0 * sum / static_cast<double>(r.eta.size());
+}
+
+/// Incident and reflected wave amplitudes from two gauges Δx apart (x2 > x1, waves coming
+/// from −x) by the two-gauge method of Goda & Suzuki 1976 ("Estimation of incident and
+/// reflected waves in random wave experiments", Proc. 15th ICCE): with η = a_I cos(ωt − kx + φ_I)
+/// + a_R cos(ωt + kx + φ_R), A1 = I + R, A2 = I e^{−ikΔx} + R e^{ikΔx}.
+struct Split {
+    double incident, reflected;
+    [[nodiscard]] double coefficient() const { return reflected / incident; }
+};
+inline Split incidentReflected(std::complex<double> a1, std::complex<double> a2, double k, double dx) {
+    const std::complex<double> e(std::cos(k * dx), std::sin(k * dx));  // e^{ikΔx}
+    const std::complex<double> det = e - std::conj(e);                 // 2i sin kΔx
+    const std::complex<double> incident = (a1 * e - a2) / det;
+    const std::complex<double> reflected = (a2 - a1 * std::conj(e)) / det;
+    return {std::abs(incident), std::abs(reflected)};
+}
+
+}  // namespace tide::waves

@@ -1,0 +1,126 @@
+// Linear wave theory for the wave makers: dispersion, Biesel transfer functions, spectra, ramp.
+#include <cmath>
+#include <numbers>
+
+#include <gtest/gtest.h>
+
+#include "sources/wave_maker.hpp"
+#include "sources/wave_theory.hpp"
+
+namespace {
+
+using namespace tide;
+using namespace tide::waves;
+
+constexpr double g = 9.81;
+
+TEST(Dispersion, DeepAndShallowWaterLimits) {
+    // Deep water (kd ≫ 1): ω² = g k.
+    const double omega = 2.0 * std::numbers::pi / 1.0;
+    EXPECT_NEAR(waveNumber(omega, 100.0), omega * omega / g, 1e-9 * omega * omega / g);
+    // Shallow water (kd ≪ 1): ω = k √(g d), to O((kd)²).
+    const double slow = 2.0 * std::numbers::pi / 100.0, depth = 0.05;
+    const double kShallow = slow / std::sqrt(g * depth);
+    EXPECT_NEAR(waveNumber(slow, depth), kShallow, 1e-4 * kShallow);
+}
+
+TEST(Dispersion, MatchesTheTabulatedLinearTheory) {
+    // /work/shared/validation/linear_wave_theory_table.csv: kd → ω √(d/g).
+    const double table[][2] = {{0.1, 0.0998339}, {0.5, 0.480686}, {1.0, 0.872694}, {2.0, 1.38854}, {5.0, 2.23597}};
+    for (const auto& row : table) {
+        const double d = 0.3, omega = row[1] * std::sqrt(g / d);
+        // The table gives ω√(d/g) to 6 significant digits (±5e-6 relative at most); in deep
+        // water k ∝ ω², so kd carries twice that: allow 1.2e-5 relative.
+        EXPECT_NEAR(waveNumber(omega, d) * d, row[0], 1.2e-5 * row[0]) << "kd = " << row[0];
+    }
+    // The flume of the acceptance tests: T = 1 s, d = 0.3 m, λ ≈ 1.37 m.
+    const double lambda = 2.0 * std::numbers::pi / waveNumber(2.0 * std::numbers::pi, 0.3);
+    EXPECT_NEAR(lambda, 1.37, 0.01);
+}
+
+TEST(Biesel, TransferFunctionsMatchTheTableAndTheirLimits) {
+    // linear_wave_theory_table.csv: kd, H/S piston, H/S flap.
+    const double table[][3] = {{0.1, 0.0999998, 0.0500415}, {1.0, 0.981789, 0.528088}, {2.0, 1.68158, 1.04124},
+                               {5.0, 1.998, 1.60375}};
+    for (const auto& row : table) {
+        EXPECT_NEAR(pistonHeightToStroke(row[0]), row[1], 1e-5) << "kd = " << row[0];
+        EXPECT_NEAR(flapHeightToStroke(row[0]), row[2], 1e-5) << "kd = " << row[0];
+    }
+    // Shallow water: piston H/S → kd, flap → kd/2; deep water: both → 2.
+    EXPECT_NEAR(pistonHeightToStroke(1e-3) / 1e-3, 1.0, 1e-5);
+    EXPECT_NEAR(flapHeightToStroke(1e-3) / 1e-3, 0.5, 1e-5);
+    EXPECT_NEAR(pistonHeightToStroke(20.0), 2.0, 1e-6);
+    EXPECT_NEAR(flapHeightToStroke(20.0), 2.0, 0.11);  // 2 − 2/kd: slower
+}
+
+TEST(Spectrum, PiersonMoskowitzHasItsClosedFormConstant) {
+    // γ = 1: S(f) = 5/16 Hs² fp⁴ f⁻⁵ exp(−5/4 (fp/f)⁴), whose integral is Hs²/16 exactly.
+    const double hs = 0.05, tp = 1.2, fp = 1.0 / tp;
+    const JonswapSpectrum pm(hs, tp, 1.0);
+    EXPECT_NEAR(pm.scale(), 5.0 / 16.0 * hs * hs * std::pow(fp, 4), 1e-6 * pm.scale());
+}
+
+TEST(Spectrum, JonswapIntegratesToTheSignificantHeight) {
+    // ∫ S df = m0 = Hs²/16, by an independent trapezoid rule in f over [0.02, 40] fp.
+    for (const double gamma : {1.0, 3.3, 7.0}) {
+        const double hs = 0.06, tp = 1.0, fp = 1.0 / tp;
+        const JonswapSpectrum s(hs, tp, gamma);
+        const int n = 400000;
+        const double lo = 0.02 * fp, hi = 40.0 * fp, df = (hi - lo) / n;
+        double m0 = 0.5 * (s(lo) + s(hi)) * df;
+        for (int k = 1; k < n; ++k) m0 += s(lo + k * df) * df;
+        EXPECT_NEAR(m0, hs * hs / 16.0, 1e-4 * hs * hs / 16.0) << "gamma " << gamma;
+        // The peak is at fp and γ times the Pierson–Moskowitz peak.
+        EXPECT_NEAR(s(fp) / JonswapSpectrum(hs, tp, 1.0)(fp) * JonswapSpectrum(hs, tp, 1.0).scale() / s.scale(), gamma,
+                    1e-9 * gamma);
+    }
+}
+
+TEST(Spectrum, PaddleComponentsCarryTheSpectrumsVariance) {
+    WaveMakerDef def;
+    def.depth = 0.4;
+    def.spectrum = {WaveSpectrumDef::Type::Jonswap, 0.05f, 1.2f, 3.3f, 7, 128, 0.5f, 3.0f};
+    const auto components = paddleComponents(def);
+    ASSERT_EQ(components.size(), 128u);
+    const JonswapSpectrum s(0.05, 1.2, 3.3);
+    double variance = 0.0, inBand = 0.0;
+    for (const PaddleComponent& c : components) variance += 0.5 * c.waveAmplitude * c.waveAmplitude;
+    const double fp = 1.0 / 1.2, lo = 0.5 * fp, hi = 3.0 * fp;
+    for (int k = 0; k < 100000; ++k) inBand += s(lo + (k + 0.5) * (hi - lo) / 100000) * (hi - lo) / 100000;
+    EXPECT_NEAR(variance, inBand, 2e-3 * inBand);
+    // The band [0.5, 3] fp holds nearly all of m0 = Hs²/16.
+    EXPECT_GT(inBand, 0.97 * 0.05 * 0.05 / 16.0);
+    // Same seed, same phases; another seed, others.
+    EXPECT_EQ(paddleComponents(def)[5].phase, components[5].phase);
+    def.spectrum.seed = 8;
+    EXPECT_NE(paddleComponents(def)[5].phase, components[5].phase);
+}
+
+TEST(WaveMakerMotion, RegularStrokeAndSmoothRamp) {
+    WaveMakerDef def;
+    def.depth = 0.3f;
+    def.waveHeight = 0.04f;
+    def.period = 1.0f;
+    def.rampTime = 2.0f;
+    const double k = waveNumber(2.0 * std::numbers::pi, 0.3);
+    const auto components = paddleComponents(def);
+    ASSERT_EQ(components.size(), 1u);
+    EXPECT_NEAR(2.0 * components[0].amplitude, 0.04 / pistonHeightToStroke(k * 0.3), 1e-7);
+    const WaveMaker maker(def, 0.0f, g);
+    // Starts at rest, continuous through the end of the ramp, full stroke after it.
+    const auto m0 = maker.motion(0.0);
+    EXPECT_EQ(m0.x, 0.0);
+    EXPECT_EQ(m0.v, 0.0);
+    const auto before = maker.motion(2.0 - 1e-6), after = maker.motion(2.0 + 1e-6);
+    EXPECT_NEAR(before.x, after.x, 1e-6);
+    EXPECT_NEAR(before.v, after.v, 1e-5);
+    EXPECT_NEAR(maker.motion(2.25).x, components[0].amplitude, 1e-9);
+    // Velocity is the derivative of displacement, during the ramp too.
+    for (const double t : {0.3, 1.1, 1.7, 3.4}) {
+        const double e = 1e-6;
+        EXPECT_NEAR(maker.motion(t).v, (maker.motion(t + e).x - maker.motion(t - e).x) / (2 * e), 1e-6);
+        EXPECT_NEAR(maker.motion(t).a, (maker.motion(t + e).v - maker.motion(t - e).v) / (2 * e), 1e-4);
+    }
+}
+
+}  // namespace
