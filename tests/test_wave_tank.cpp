@@ -51,6 +51,10 @@ FlumeRun runFlume(float spacing, float length, float dampingLength, const std::v
     SolverDef solver;
     solver.maxDensityError = static_cast<float>(envOr("TIDE_WAVE_ERROR", 0.003));
     solver.maxDt = static_cast<float>(envOr("TIDE_WAVE_MAXDT", solver.maxDt));
+    // No XSPH smoothing: as an artificial viscosity acting every step it halves the wave height
+    // the flume keeps (docs/waves.md: −22.7 % with dfsph's default ε = 0.01, −14.1 % without).
+    solver.xsph = static_cast<float>(envOr("TIDE_WAVE_XSPH", 0.0));
+    if (const char* model = std::getenv("TIDE_WAVE_VISCOSITY")) solver.viscosity = model;
     World world = scenarios::waveFlume(spacing, length, paddle.depth, paddle, dampingLength,
                                        static_cast<int>(envOr("TIDE_WAVE_THREADS", 0)), 4, solver);
     FlumeRun run;
