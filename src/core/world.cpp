@@ -172,7 +172,7 @@ struct World::Impl {
     }
 
     [[nodiscard]] std::uint64_t countLattice(const Lattice& lattice) const {
-        if (obstacles.empty()) return lattice.size();
+        if (obstacles.empty() && paddles.empty()) return lattice.size();
         std::uint64_t n = 0;
         lattice.forEach([&](const glm::vec3& x) { n += clearOfObstacles(x); });
         return n;
