@@ -70,8 +70,14 @@ Hydrostatics hydrostaticTank(const std::string& solver) {
     return out;
 }
 
-// Issue 4 asks for a max speed < 0.02 m/s at rest; measured ~0.07 (dfsph, pcisph) and ~0.04
-// (wcsph), from free-surface particles creeping along the walls, so that bound is looser.
+// Issue 4 asks for a max speed < 0.02 m/s at rest; measured ~0.07–0.097 (dfsph, pcisph) and
+// ~0.04 (wcsph), so that bound is looser. The motion is the whole tank's, not a few surface
+// particles': at 2 s the interior's RMS speed is 0.02 m/s (dfsph). It comes in two parts:
+// the lattice's top layer settles into the layer below in the first 0.5 s (its density
+// deficit falls from 1 % to 0.09 %, releasing ~0.05 J, the kinetic energy's peak), and each
+// step's solve stops at its tolerance with a slightly different residual, kicks that XSPH
+// (ε = 0.01 per step) damps slowly. A damped settling phase removes the first part but not
+// the second: released after 1.5 s of settling, the tank is back at 0.03–0.07 m/s within 0.5 s.
 TEST(DfsphSolver, HydrostaticTankMatchesRhoGD) {
     const Hydrostatics h = hydrostaticTank("dfsph");
     EXPECT_LT(h.pressureRms, 0.05);
