@@ -25,6 +25,15 @@ constexpr float kRelaxation = 0.5f;
 constexpr double kDensityTarget = 0.9;
 /// Fraction of the last step's κ (and κᵛ) a solve starts from; SPlisHSPlasH halves it too.
 constexpr float kWarmStart = 0.5f;
+/// Heavy-ball momentum of the density solve (Polyak 1964, "Some methods of speeding up the
+/// convergence of iteration methods"): each Jacobi update adds this fraction of the last
+/// one. Jacobi alone is slowest on smooth pressure fields (the half of a hydrostatic profile
+/// the warm start leaves to rebuild); with 0.7 the 50k benchmark dam break takes 8.9
+/// iterations per step instead of 15.5 at the same compression (0.045 %), and the 0.3 m
+/// tank at rest 14 instead of 35 (0.8: 9.1 on the dam break; 0.5: 11.0). The price: a probe
+/// in that tank reads a pressure that wanders 62 Pa (3 %) in time instead of 38 Pa; the
+/// per-particle pressure noise (12 % RMS) and the speeds at rest are the same.
+constexpr float kMomentum = 0.7f;
 }  // namespace
 
 void DfsphBender2017::prepare(StepContext& ctx) {
@@ -282,10 +291,12 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
         });
         if (iteration >= ctx.solver.minIterations && meanRelativeSource(ctx) <= kDensityTarget * ctx.solver.maxDensityError)
             break;
-        // Projected Jacobi: κ stays ≥ 0 (no tension at the free surface) but may fall back
-        // where the warm start pushed too hard.
+        // Projected Jacobi with momentum: κ stays ≥ 0 (no tension at the free surface) but may
+        // fall back where the warm start pushed too hard; k_ still holds the last change (× Δt).
+        const float momentum = iteration > 0 ? kMomentum / dt : 0.0f;
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            const float updated = std::max(kappa[i] + kRelaxation * residual_[i] * alpha_[i] * invDt2, 0.0f);  // eq. 12
+            const float updated =
+                std::max(kappa[i] + kRelaxation * residual_[i] * alpha_[i] * invDt2 + momentum * k_[i], 0.0f);  // eq. 12
             k_[i] = (updated - kappa[i]) * dt;
             kappa[i] = updated;
         });

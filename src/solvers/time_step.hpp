@@ -16,8 +16,9 @@ namespace tide {
 /// means huge velocities. Two steps of half the remaining time land instead.
 inline double landOn(double stable, double remaining) {
     // Round-off slack: a float max_dt of 5e-3 is 0.00499999989, and a 0.025 s frame must
-    // still be five steps, not four and two halves.
-    if (remaining <= stable * (1.0 + 1e-6)) return remaining;
+    // still be five steps, not four and two halves; 0.5 s of them leaves 2.2e-6 of a step
+    // over, so the slack is 1e-4 of a step (harmless for stability).
+    if (remaining <= stable * (1.0 + 1e-4)) return remaining;
     if (remaining < 2.0 * stable) return 0.5 * remaining;
     return stable;
 }
