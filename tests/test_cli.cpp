@@ -11,39 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include "cli_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Result {
-    int exit;
-    std::string output;  ///< stdout and stderr together
-};
-
-Result run(const std::string& command) {
-    Result r{-1, {}};
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buffer{};
-    std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("tide_cli_test_" + std::to_string(::getpid())) / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir.parent_path());
-    return dir;
-}
-
-fs::path writeScene(const std::string& name, const std::string& text) {
-    const fs::path file = scratch(name + ".json");
-    std::ofstream(file) << text;
-    return file;
-}
+using namespace tide::testing;
 
 const std::string kTide = TIDE_BIN;
 

@@ -35,6 +35,16 @@ std::uint64_t availableMemoryBytes() {
     return pages > 0 && size > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(size) : ~0ull;
 }
 
+std::string memoryShortfall(const Scene& scene) {
+    const SceneEstimate size = estimate(scene);
+    const std::uint64_t available = availableMemoryBytes();
+    if (size.bytes <= available) return {};
+    std::ostringstream msg;
+    msg << "the scene needs about " << size.totalParticles << " particles and " << (size.bytes >> 20)
+        << " MiB, more than the " << (available >> 20) << " MiB this machine has free";
+    return msg.str();
+}
+
 SceneEstimate estimate(const Scene& scene) {
     SceneEstimate e;
     e.initialParticles.assign(scene.materials.size(), 0);

@@ -733,12 +733,9 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
 
     if (r.problems.empty()) {
         const SceneEstimate size = estimate(scene);
-        const std::uint64_t available = availableMemoryBytes();
-        if (size.bytes > available) {
+        if (const std::string shortfall = memoryShortfall(scene); !shortfall.empty()) {
             std::ostringstream msg;
-            msg << "the scene needs about " << size.totalParticles << " particles and " << (size.bytes >> 20)
-                << " MiB, more than the " << (available >> 20) << " MiB this machine has free (particle_spacing "
-                << w.particleSpacing / scale << ")";
+            msg << shortfall << " (particle_spacing " << w.particleSpacing / scale << ")";
             r.fail("particle_spacing", msg.str());
         }
         if (size.totalParticles > 0xfffffff0ull) r.fail("particle_spacing", "more than 2^32 particles");

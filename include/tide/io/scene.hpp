@@ -88,6 +88,9 @@ inline constexpr std::uint64_t kBytesPerParticle = 320;
 
 /// Memory this machine can still give, bytes (MemAvailable).
 std::uint64_t availableMemoryBytes();
+/// Empty when the scene (up to its end time) fits in availableMemoryBytes(); otherwise why
+/// not, with the estimate: "the scene needs about N particles and M MiB, more than ...".
+std::string memoryShortfall(const Scene& scene);
 
 /// Create the world a scene describes: materials, obstacles, wave makers, damping zones, blocks, emitters.
 World buildWorld(const Scene& scene);
