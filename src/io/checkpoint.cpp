@@ -56,7 +56,7 @@ public:
         if (count > (bytes_.size() - at_) / sizeof(T)) fail(std::string(what) + ": " + std::to_string(count) +
                                                              " values do not fit the bytes left");
         values.resize(count);
-        std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));
+        if (count > 0) std::memcpy(values.data(), bytes_.data() + at_, count * sizeof(T));  // data() may be null
         at_ += count * sizeof(T);
     }
     std::string getBytes(const char* what) {
