@@ -219,13 +219,12 @@ struct World::Impl {
 
     void emit(double t0, double dt) {
         for (EmitterState& emitter : emitters) {
-            emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
-                if (particles.size() + countLattice(layer) > def.capacity) {
-                    ++stats.emitterCapacityHits;  // counted, not printed: the core has no console
-                    return;
-                }
+            const double dropped = emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
+                if (particles.size() + countLattice(layer) > def.capacity) return false;
                 appendLattice(layer, emitter.def.velocity, emitter.def.material);
+                return true;
             });
+            stats.emitterCapacityHits += dropped < 1.8e19 ? static_cast<std::uint64_t>(dropped) : ~std::uint64_t{0};
         }
     }
 
