@@ -74,6 +74,7 @@ std::vector<BrokenScene> brokenScenes() {
         {"spacing missing", replace(ok, "\"particle_spacing\": 0.02,", ""), "particle_spacing"},
         {"spacing too fine for memory", replace(ok, "\"particle_spacing\": 0.02", "\"particle_spacing\": 0.00005"), "particle_spacing"},
         {"end time negative", replace(ok, "\"end_time\": 0.1", "\"end_time\": -1"), "end_time"},
+        {"number beyond double", replace(ok, "\"end_time\": 0.1", "\"end_time\": 1e400"), "number 1e400 is out of range"},
         {"end time a string", replace(ok, "\"end_time\": 0.1", "\"end_time\": \"soon\""), "end_time"},
         {"no materials", replace(ok, R"([{"name": "water", "density": 1000, "viscosity": 0.001}])", "[]"), "materials"},
         {"negative density", replace(ok, "\"density\": 1000", "\"density\": -1000"), "materials[0].density"},

@@ -83,8 +83,11 @@ struct SceneEstimate {
     std::uint64_t bytes = 0;                      ///< peak memory, estimated
 };
 SceneEstimate estimate(const Scene& scene);
-/// Bytes of memory one particle costs (state, neighbour lists, grid), for estimates.
-inline constexpr std::uint64_t kBytesPerParticle = 320;
+/// Bytes of memory one particle costs (state, neighbour lists, grid, solver arrays), for
+/// estimates: peak RSS of `tide run` grew by ~920 B per particle from 12 000 to 50 653
+/// particles with dfsph (~650 with wcsph/pcisph; docs/robustness.md). It was 320, which let a
+/// scene three times too big for the machine through.
+inline constexpr std::uint64_t kBytesPerParticle = 1024;
 
 /// Memory this machine can still give, bytes (MemAvailable).
 std::uint64_t availableMemoryBytes();
