@@ -40,5 +40,9 @@ bench: build
 	@$(BUILD_DIR)/bin/tide_scenarios --seconds $(BENCH_SECONDS)
 	@$(BUILD_DIR)/bin/tide_wave_bench --spacing $(WAVE_BENCH_SPACING)
 
+# Soak (not CI): the beach scene for SOAK_SECONDS of wall time (default 600); memory and energy.
+soak: build
+	@bench/soak.sh $(BUILD_DIR)
+
 clean:
 	@rm -rf $(BUILD_DIR) build-asan build-tsan
