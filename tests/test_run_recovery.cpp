@@ -118,17 +118,17 @@ TEST(RunRecovery, KilledAtRandomMomentsResumesToTheCleanRunsFiles) {
     const fs::path out = scratch("recovery_killed");
     std::mt19937 random(9);  // fixed: the same moments every run of the test
     std::uniform_real_distribution<double> fraction(0.15, 0.45);
-    int kills = 0, sessions = 0;
+    int kills = 0, sessions = 0, resumes = 0;
     bool finished = false;
     while (!finished && sessions < 12) {
-        std::vector<std::string> args{"run", clean.scene.string(), "--checkpoint-every", "1",
-                                      "--threads", sessions % 2 ? "1" : "2"};
+        std::vector<std::string> args{"run", clean.scene.string(), "--threads", sessions % 2 ? "1" : "2"};
         const bool haveCheckpoint = fs::exists(out) && !visibleFiles(out).empty() &&
                                     [&] { for (const auto& f : visibleFiles(out)) if (f.first.rfind("checkpoint_", 0) == 0) return true; return false; }();
         if (haveCheckpoint) {
-            args.insert(args.end(), {"--resume", out.string()});
+            args.insert(args.end(), {"--resume", out.string()});  // keeps checkpointing every frame
+            ++resumes;
         } else {
-            args.insert(args.end(), {"--out", out.string(), "--force"});
+            args.insert(args.end(), {"--out", out.string(), "--force", "--checkpoint-every", "1"});
         }
         ++sessions;
         const pid_t pid = spawnTide(args);
@@ -150,7 +150,8 @@ TEST(RunRecovery, KilledAtRandomMomentsResumesToTheCleanRunsFiles) {
         finished = true;
     }
     ASSERT_TRUE(finished);
-    std::printf("%d sessions, %d killed (clean run %.2f s)\n", sessions, kills, clean.seconds);
+    std::printf("%d sessions, %d killed, %d resumed (clean run %.2f s)\n", sessions, kills, resumes, clean.seconds);
+    EXPECT_GE(resumes, 2) << "too few kills came after the first checkpoint";
     EXPECT_GE(kills, 3) << "the run ended before it could be killed often enough";
     std::map<std::string, std::string> resumed = visibleFiles(out);
     resumed.erase("stats.json");

@@ -21,6 +21,7 @@ std::string encodeRunProgress(const RunProgress& p) {
     j["probe_rows"] = p.probeRows;
     j["scene_crc32"] = p.sceneCrc;
     j["solver"] = p.solver;
+    j["checkpoint_every"] = p.checkpointEvery;
     return j.dump();
 }
 
@@ -36,7 +37,9 @@ RunProgress decodeRunProgress(const std::string& text) {
         p.probeRows = j.at("probe_rows").get<std::string>();
         p.sceneCrc = j.at("scene_crc32").get<std::uint32_t>();
         p.solver = j.at("solver").get<std::string>();
-        if (p.frame < 0) throw std::runtime_error("negative frame");
+        p.checkpointEvery = j.at("checkpoint_every").get<int>();
+        if (p.frame < 0 || p.checkpointEvery < 0)
+            throw std::runtime_error("the run's progress block is unreadable (negative frame or interval)");
         return p;
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(std::string("the run's progress block is unreadable (") + e.what() + ")");

@@ -175,6 +175,7 @@ int runCommand(const RunOptions& o) {
     }
 
     const int frames = static_cast<int>(std::floor(scene.endTime * scene.output.fps + 1e-9));
+    const int checkpointEvery = o.checkpointEvery > 0 ? o.checkpointEvery : done.checkpointEvery;  // a resumed run keeps its own
     const int firstFrame = resuming ? done.frame + 1 : 0;
     const auto start = std::chrono::steady_clock::now();
     const auto wallSoFar = [&] {
@@ -218,9 +219,16 @@ int runCommand(const RunOptions& o) {
                 std::fprintf(stderr, "tide: warning: the world is full (%u particles, its capacity): emitters stop emitting\n",
                              world->def().capacity);
             }
-            if (o.checkpointEvery > 0 && frame > 0 && frame % o.checkpointEvery == 0) {
-                const RunProgress now{frame, particleSteps, lost, wallSoFar(), measurements.gaugeRows(),
-                                      measurements.probeRows(), crc, scene.world.solver.method};
+            if (checkpointEvery > 0 && frame > 0 && frame % checkpointEvery == 0) {
+                const RunProgress now{frame,
+                                      particleSteps,
+                                      lost,
+                                      wallSoFar(),
+                                      measurements.gaugeRows(),
+                                      measurements.probeRows(),
+                                      crc,
+                                      scene.world.solver.method,
+                                      checkpointEvery};
                 io::writeCheckpoint(checkpointFile(dir, frame), world->saveState(), encodeRunProgress(now));
                 pruneCheckpoints(dir);
             }
