@@ -59,6 +59,30 @@ done
 section "TSan build"
 configure build-tsan -DTIDE_SANITIZE=thread
 cmake --build build-tsan -j "$JOBS" --target test_checkpoint
+section "TSan sees OpenMP races (self-check)"
+# A blind TSan would pass anything: a racy OpenMP sum must be reported, its fixed form not.
+cat > build-tsan/omp_race.cpp <<'CPP'
+#include <cstdio>
+int main(int argc, char**) {
+    double sum = 0, a[20000];
+    for (double& x : a) x = argc;
+#pragma omp parallel for num_threads(2) reduction(+ : sum)
+    for (int i = 0; i < 20000; ++i) sum += a[i];
+#ifdef RACE
+#pragma omp parallel for num_threads(2)
+    for (int i = 0; i < 20000; ++i) sum += a[i];
+#endif
+    std::printf("%g\n", sum);
+}
+CPP
+clang++ -fopenmp -fsanitize=thread -g -O1 build-tsan/omp_race.cpp -o build-tsan/omp_clean
+clang++ -fopenmp -fsanitize=thread -g -O1 -DRACE build-tsan/omp_race.cpp -o build-tsan/omp_race
+build-tsan/omp_clean >/dev/null
+if build-tsan/omp_race >/dev/null 2>build-tsan/omp_race.log || ! grep -q "data race" build-tsan/omp_race.log; then
+  echo "TSan did not report the deliberate OpenMP race: the TSan check would be blind" >&2
+  exit 1
+fi
+echo "the deliberate race is reported, the reduction is not"
 section "TSan test_checkpoint (2 threads)"
 build-tsan/bin/test_checkpoint --gtest_brief=1 \
   --gtest_filter='Checkpoint.DfsphDamBreakResumesBitIdentically:Checkpoint.EmitterAndWaveMakerResumeBitIdentically'
