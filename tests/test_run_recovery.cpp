@@ -202,6 +202,28 @@ TEST(RunRecovery, DamagedCheckpointsAreRefusedTouchingNothing) {
     EXPECT_EQ(empty.exit, 2) << empty.output;
 }
 
+// `tide run SCENE --resume DIR` alone continues the run as it was started: its end time,
+// formats and checkpoint interval, not the scene's.
+TEST(RunRecovery, AResumedRunKeepsItsEndTimeFormatsAndInterval) {
+    const CleanRun& clean = cleanRun();
+    const fs::path out = scratch("recovery_flags");
+    const Result first = run(kTide + " run " + clean.scene.string() +
+                             " --quiet --end-time 0.2 --format csv --checkpoint-every 3 --out " + out.string());
+    ASSERT_EQ(first.exit, 0) << first.output;
+    fs::remove(out / "frame_00004.csv");  // as if killed after the checkpoint of frame 3
+    fs::remove(out / "stats.json");
+    const Result resumed = run(kTide + " run " + clean.scene.string() + " --quiet --resume " + out.string());
+    ASSERT_EQ(resumed.exit, 0) << resumed.output;
+    EXPECT_TRUE(fs::exists(out / "frame_00004.csv"));
+    EXPECT_TRUE(fs::exists(out / "stats.json"));
+    EXPECT_FALSE(fs::exists(out / "frame_00005.csv")) << "ran on to the scene's end time";
+    EXPECT_FALSE(fs::exists(out / "frame_00004.vtu")) << "wrote the scene's format";
+    EXPECT_TRUE(visibleFiles(out)["frame_00004.csv"] == clean.files.at("frame_00004.csv"));
+    const Result other = run(kTide + " run " + clean.scene.string() + " --quiet --solver wcsph --resume " + out.string());
+    EXPECT_EQ(other.exit, 2) << other.output;
+    EXPECT_NE(other.output.find("written by the dfsph solver, --solver asks for wcsph"), std::string::npos) << other.output;
+}
+
 TEST(RunRecovery, AHugeTimeStepIsStoppedWithAPreciseMessage) {
     const fs::path scene = writeScene("unstable", R"({
   "name": "unstable", "domain": {"min": [0, 0, 0], "max": [0.4, 0.4, 0.4]},

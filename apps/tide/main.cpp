@@ -28,8 +28,9 @@ int main(int argc, char** argv) {
                        "Write OUT/checkpoint_NNNNN.tidecp every N frames (the newest two are kept)")
         ->check(CLI::Range(1, 1 << 30));
     runApp->add_option("--resume", run.resume,
-                       "Continue the stopped run in this folder from its newest checkpoint (same scene and solver;\n"
-                       "it keeps checkpointing as before); its frames come out bit-identical to an uninterrupted run's");
+                       "Continue the stopped run in this folder from its newest checkpoint (same scene; it keeps its\n"
+                       "end time, formats, solver and checkpoint interval unless given again); its frames come out\n"
+                       "bit-identical to an uninterrupted run's");
     runApp->footer("On a terminal a progress bar shows simulated time, frame, particles, particle-steps/s and\n"
                    "the time left; otherwise one line per frame. Frame k (time k/fps) is written as\n"
                    "OUT/frame_NNNNN.<format>, with OUT/frames.pvd for ParaView and OUT/stats.json at the end.\n"

@@ -22,6 +22,8 @@ std::string encodeRunProgress(const RunProgress& p) {
     j["scene_crc32"] = p.sceneCrc;
     j["solver"] = p.solver;
     j["checkpoint_every"] = p.checkpointEvery;
+    j["end_time"] = p.endTime;
+    j["formats"] = p.formats;
     return j.dump();
 }
 
@@ -38,6 +40,8 @@ RunProgress decodeRunProgress(const std::string& text) {
         p.sceneCrc = j.at("scene_crc32").get<std::uint32_t>();
         p.solver = j.at("solver").get<std::string>();
         p.checkpointEvery = j.at("checkpoint_every").get<int>();
+        p.endTime = j.at("end_time").get<double>();
+        p.formats = j.at("formats").get<std::vector<std::string>>();
         if (p.frame < 0 || p.checkpointEvery < 0)
             throw std::runtime_error("the run's progress block is unreadable (negative frame or interval)");
         return p;

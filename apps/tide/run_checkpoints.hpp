@@ -22,7 +22,10 @@ struct RunProgress {
     std::string gaugeRows, probeRows;  ///< Measurements' rows so far
     std::uint32_t sceneCrc = 0;        ///< CRC-32 of the scene file: a checkpoint fits only its scene
     std::string solver;                ///< the solver the run used (--solver may override the scene's)
-    int checkpointEvery = 0;           ///< --checkpoint-every of the run: a resumed run keeps it
+    // The run's command-line choices: a resumed run keeps them unless given again.
+    int checkpointEvery = 0;           ///< --checkpoint-every
+    double endTime = 0.0;              ///< s, the scene's or --end-time
+    std::vector<std::string> formats;  ///< frame formats, the scene's or --format
 };
 
 /// The application block of a checkpoint (JSON text) and back; decode throws

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -69,9 +70,16 @@ struct ResumeError {
     std::string message;
 };
 
-/// Restores `world` and returns the run's progress from the newest checkpoint in `dir`;
-/// throws ResumeError, changing nothing, when there is none or it does not fit.
-RunProgress resumeFrom(const fs::path& dir, World& world, std::uint32_t crc, const std::string& solver) {
+/// The newest checkpoint of a stopped run and the run's progress in it.
+struct Resumption {
+    fs::path file;
+    io::Checkpoint checkpoint;
+    RunProgress progress;
+};
+
+/// Reads and checks the newest checkpoint in `dir`; throws ResumeError, changing nothing,
+/// when there is none or it is damaged.
+Resumption loadNewestCheckpoint(const fs::path& dir) {
     const std::string flag = "--resume " + dir.string();
     if (!fs::is_directory(dir)) throw ResumeError{flag + ": not a folder"};
     const std::vector<fs::path> files = listCheckpoints(dir);
@@ -80,26 +88,14 @@ RunProgress resumeFrom(const fs::path& dir, World& world, std::uint32_t crc, con
     const std::string older = files.size() > 1 ? "; the older " + files[1].filename().string() +
                                                      " remains: remove the damaged file to resume from it"
                                                : "";
-    io::Checkpoint checkpoint;
-    RunProgress progress;
+    Resumption r{files[0], {}, {}};
     try {
-        checkpoint = io::readCheckpoint(files[0]);
-        progress = decodeRunProgress(checkpoint.application);
+        r.checkpoint = io::readCheckpoint(files[0]);
+        r.progress = decodeRunProgress(r.checkpoint.application);
     } catch (const std::exception& e) {
         throw ResumeError{std::string(e.what()) + "; refusing to resume, nothing was changed" + older};
     }
-    if (progress.sceneCrc != crc)
-        throw ResumeError{files[0].string() + ": written for another version of the scene file (its CRC-32 differs); "
-                          "resume with the scene the run started with"};
-    if (progress.solver != solver)
-        throw ResumeError{files[0].string() + ": written by the " + progress.solver + " solver, this run uses " + solver +
-                          " (--solver)"};
-    try {
-        world.restoreState(std::move(checkpoint.world));
-    } catch (const std::invalid_argument& e) {
-        throw ResumeError{files[0].string() + ": " + e.what()};
-    }
-    return progress;
+    return r;
 }
 
 }  // namespace
@@ -112,24 +108,38 @@ int runCommand(const RunOptions& o) {
         reportSceneProblems(o.scene, e.problems);
         return kExitBadInput;
     }
+    const bool resuming = !o.resume.empty();
+    std::optional<Resumption> resumed;
+    try {
+        if (resuming) resumed = loadNewestCheckpoint(o.resume);
+    } catch (const ResumeError& e) {
+        std::fprintf(stderr, "tide: %s\n", e.message.c_str());
+        return kExitBadInput;
+    }
+    // A resumed run keeps the choices it was started with, unless they are given again.
+    const double sceneEndTime = scene.endTime;
     if (o.endTime) scene.endTime = *o.endTime;
-    if (!o.solver.empty()) {
+    else if (resumed) scene.endTime = resumed->progress.endTime;
+    const std::string solver = !o.solver.empty() ? o.solver : resumed ? resumed->progress.solver : scene.world.solver.method;
+    if (solver != scene.world.solver.method) {
         const auto known = solverNames();
-        if (std::find(known.begin(), known.end(), o.solver) == known.end()) {
-            std::fprintf(stderr, "--solver: unknown solver \"%s\"\n", o.solver.c_str());
+        if (std::find(known.begin(), known.end(), solver) == known.end()) {
+            std::fprintf(stderr, "--solver: unknown solver \"%s\"\n", solver.c_str());
             return kExitBadInput;
         }
-        scene.world.solver.method = o.solver;
+        scene.world.solver.method = solver;
     }
-    if (!o.formats.empty()) {
+    const std::vector<std::string>& formats = !o.formats.empty() ? o.formats
+                                              : resumed                ? resumed->progress.formats
+                                                                       : std::vector<std::string>{};
+    if (!formats.empty()) {
         scene.output.formats.clear();
-        for (const std::string& name : o.formats)
+        for (const std::string& name : formats)
             if (auto f = io::parseFormat(name);
                 f && std::find(scene.output.formats.begin(), scene.output.formats.end(), *f) == scene.output.formats.end())
                 scene.output.formats.push_back(*f);
     }
     scene.world.threads = o.threads;
-    const bool resuming = !o.resume.empty();
     if (resuming && !o.out.empty() && fs::weakly_canonical(o.out) != fs::weakly_canonical(o.resume)) {
         std::fprintf(stderr, "--out %s: a resumed run writes into its own folder (--resume %s); drop --out\n",
                      o.out.c_str(), o.resume.c_str());
@@ -141,9 +151,9 @@ int runCommand(const RunOptions& o) {
 
     // A longer end time lets emitters emit more: size the world for it, and refuse up front
     // what this machine cannot hold.
-    if (o.endTime)
+    if (scene.endTime != sceneEndTime)
         if (const std::string shortfall = io::memoryShortfall(scene); !shortfall.empty()) {
-            std::fprintf(stderr, "%s: --end-time %g: %s\n", o.scene.c_str(), *o.endTime, shortfall.c_str());
+            std::fprintf(stderr, "%s: end time %g s: %s\n", o.scene.c_str(), scene.endTime, shortfall.c_str());
             return kExitBadInput;
         }
     scene.world.capacity = static_cast<std::uint32_t>(
@@ -154,8 +164,19 @@ int runCommand(const RunOptions& o) {
     const std::uint32_t crc = sceneCrc(o.scene);
     try {
         world.emplace(io::buildWorld(scene));
-        if (resuming) {
-            done = resumeFrom(dir, *world, crc, scene.world.solver.method);
+        if (resumed) {
+            done = resumed->progress;
+            const std::string file = resumed->file.string();
+            if (done.sceneCrc != crc)
+                throw ResumeError{file + ": written for another version of the scene file (its CRC-32 differs); "
+                                  "resume with the scene the run started with"};
+            if (done.solver != solver)
+                throw ResumeError{file + ": written by the " + done.solver + " solver, --solver asks for " + solver};
+            try {
+                world->restoreState(std::move(resumed->checkpoint.world));
+            } catch (const std::invalid_argument& e) {
+                throw ResumeError{file + ": " + e.what()};
+            }
             removeStaleTemporaries(dir);  // a killed run's half-written files
         } else {
             prepareOutputFolder(dir, o.force);
@@ -175,7 +196,9 @@ int runCommand(const RunOptions& o) {
     }
 
     const int frames = static_cast<int>(std::floor(scene.endTime * scene.output.fps + 1e-9));
-    const int checkpointEvery = o.checkpointEvery > 0 ? o.checkpointEvery : done.checkpointEvery;  // a resumed run keeps its own
+    const int checkpointEvery = o.checkpointEvery > 0 ? o.checkpointEvery : done.checkpointEvery;
+    std::vector<std::string> formatNames;
+    for (const io::Format f : scene.output.formats) formatNames.emplace_back(io::extension(f));
     const int firstFrame = resuming ? done.frame + 1 : 0;
     const auto start = std::chrono::steady_clock::now();
     const auto wallSoFar = [&] {
@@ -228,7 +251,9 @@ int runCommand(const RunOptions& o) {
                                       measurements.probeRows(),
                                       crc,
                                       scene.world.solver.method,
-                                      checkpointEvery};
+                                      checkpointEvery,
+                                      scene.endTime,
+                                      formatNames};
                 io::writeCheckpoint(checkpointFile(dir, frame), world->saveState(), encodeRunProgress(now));
                 pruneCheckpoints(dir);
             }
