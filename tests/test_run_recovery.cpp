@@ -117,7 +117,8 @@ TEST(RunRecovery, KilledAtRandomMomentsResumesToTheCleanRunsFiles) {
     ASSERT_EQ(clean.files.count("frame_00008.vtu"), 1u);
     const fs::path out = scratch("recovery_killed");
     std::mt19937 random(9);  // fixed: the same moments every run of the test
-    std::uniform_real_distribution<double> fraction(0.15, 0.45);
+    // Each session gets at most 30 % of a clean run: the fourth kill still finds work left.
+    std::uniform_real_distribution<double> fraction(0.1, 0.3);
     int kills = 0, sessions = 0, resumes = 0;
     bool finished = false;
     while (!finished && sessions < 12) {
