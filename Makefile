@@ -6,7 +6,7 @@ DEMO_SECONDS ?= 4
 # The long-flume wave benchmark's particle spacing (0.005 m: 8 particles per wave height, hours on 2 cores).
 WAVE_BENCH_SPACING ?= 0.005
 
-.PHONY: all deps configure build demo test bench clean
+.PHONY: all deps configure build demo test check-sanitizers bench soak clean
 
 all: build
 
@@ -26,6 +26,12 @@ demo: build
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
 
+# ASan+UBSan unit tests, TSan threaded tests, FUZZ_SECONDS of each fuzz target (clang builds in
+# build-asan/ and build-tsan/; docs/robustness.md). CI runs it after `make test`.
+FUZZ_SECONDS ?= 30
+check-sanitizers: deps
+	@JOBS=$(JOBS) FUZZ_SECONDS=$(FUZZ_SECONDS) scripts/check-sanitizers.sh
+
 # Kernels (Google Benchmark), then whole simulations (BENCH_SECONDS simulated each; the
 # SPlisHSPlasH comparison in docs/performance.md uses 1).
 BENCH_SECONDS ?= 0.1
@@ -34,5 +40,9 @@ bench: build
 	@$(BUILD_DIR)/bin/tide_scenarios --seconds $(BENCH_SECONDS)
 	@$(BUILD_DIR)/bin/tide_wave_bench --spacing $(WAVE_BENCH_SPACING)
 
+# Soak (not CI): the beach scene for SOAK_SECONDS of wall time (default 600); memory and energy.
+soak: build
+	@bench/soak.sh $(BUILD_DIR)
+
 clean:
-	@rm -rf $(BUILD_DIR)
+	@rm -rf $(BUILD_DIR) build-asan build-tsan

@@ -9,10 +9,13 @@ set -euo pipefail
 # Viewer and `tide render`: GLFW, GLEW, Dear ImGui (with its GLFW/OpenGL3 backends) and stb (PNG,
 # ImGui's fonts); GL through Mesa (GLX for windows, EGL headless; llvmpipe, no GPU needed);
 # ffmpeg for `tide render --video`; the viewer's test: Xvfb and xwd (x11-apps).
+# `make check-sanitizers`: clang with its sanitizer and libFuzzer runtimes (libclang-rt-14-dev),
+# LLVM's OpenMP (libomp-dev, whose Archer tool makes TSan understand OpenMP), llvm-symbolizer (llvm).
 packages=(cmake make g++ libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libgtest-dev libgmock-dev
           libbenchmark-dev python3-meshio python3-jsonschema bsdutils
           libglfw3-dev libglew-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libglx-mesa0 libgl1-mesa-dri
-          ffmpeg xvfb x11-apps)
+          ffmpeg xvfb x11-apps
+          clang libclang-rt-14-dev libomp-dev llvm)
 
 missing=()
 for pkg in "${packages[@]}"; do

@@ -11,39 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include "cli_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
-
-struct Result {
-    int exit;
-    std::string output;  ///< stdout and stderr together
-};
-
-Result run(const std::string& command) {
-    Result r{-1, {}};
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buffer{};
-    std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
-
-fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("tide_cli_test_" + std::to_string(::getpid())) / name;
-    fs::remove_all(dir);
-    fs::create_directories(dir.parent_path());
-    return dir;
-}
-
-fs::path writeScene(const std::string& name, const std::string& text) {
-    const fs::path file = scratch(name + ".json");
-    std::ofstream(file) << text;
-    return file;
-}
+using namespace tide::testing;
 
 const std::string kTide = TIDE_BIN;
 
@@ -101,6 +74,7 @@ std::vector<BrokenScene> brokenScenes() {
         {"spacing missing", replace(ok, "\"particle_spacing\": 0.02,", ""), "particle_spacing"},
         {"spacing too fine for memory", replace(ok, "\"particle_spacing\": 0.02", "\"particle_spacing\": 0.00005"), "particle_spacing"},
         {"end time negative", replace(ok, "\"end_time\": 0.1", "\"end_time\": -1"), "end_time"},
+        {"number beyond double", replace(ok, "\"end_time\": 0.1", "\"end_time\": 1e400"), "number 1e400 is out of range"},
         {"end time a string", replace(ok, "\"end_time\": 0.1", "\"end_time\": \"soon\""), "end_time"},
         {"no materials", replace(ok, R"([{"name": "water", "density": 1000, "viscosity": 0.001}])", "[]"), "materials"},
         {"negative density", replace(ok, "\"density\": 1000", "\"density\": -1000"), "materials[0].density"},

@@ -1,4 +1,5 @@
 // Emitters: layers exactly one spacing apart, whatever the step or frame length.
+#include <chrono>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -27,7 +28,10 @@ std::vector<float> layerPositionsAtEnd(double frameTime, double total) {
         const double frameEnd = std::min(total, t + frameTime);
         while (t < frameEnd - 1e-12) {
             const double dt = std::min(frameEnd - t, 1e-3 * (1.0 + 0.7 * std::sin(0.37 * k++)));
-            e.advance(t, dt, spacing, [&](const Lattice& layer) { layers.emplace_back(layer.first.x, t + dt); });
+            e.advance(t, dt, spacing, [&](const Lattice& layer) {
+                layers.emplace_back(layer.first.x, t + dt);
+                return true;
+            });
             t += dt;
         }
     }
@@ -74,6 +78,33 @@ TEST(Emitter, FluidJetHasNoGapsOrDoubleLayers) {
         }
         for (std::size_t k = 1; k < xs.size(); ++k) EXPECT_NEAR(xs[k] - xs[k - 1], 1.0, 0.02) << fps << " fps";
     }
+}
+
+}  // namespace
+
+namespace {
+
+// A full world drops the layers still due at once: a jet of 1e6 m/s owes ~5e7 layers per
+// step, which tried one by one would hang the step (as a fuzzed scene showed through the
+// size estimate). They are counted in emitterCapacityHits.
+TEST(Emitter, AFullWorldDropsTheLayersDueAtOnceAndCountsThem) {
+    tide::WorldDef def;
+    def.particleSpacing = 0.02f;
+    def.capacity = 300;
+    def.threads = 1;
+    tide::World world(def);
+    world.addMaterial({});
+    tide::EmitterDef jet;
+    jet.min = {0.1f, 0.5f, 0.4f};
+    jet.max = {0.1f, 0.6f, 0.5f};  // 5 × 5 = 25 particles a layer
+    jet.velocity = {1e6f, 0.0f, 0.0f};
+    world.addEmitter(jet);
+    const auto start = std::chrono::steady_clock::now();
+    world.step(1e-3);
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+    EXPECT_EQ(world.particles().size(), 300u);  // 12 layers fit
+    const double due = 1e6 * world.stats().lastDt / 0.02;
+    EXPECT_NEAR(static_cast<double>(world.stats().emitterCapacityHits), due - 12.0, 2.0);
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 // The seed's Fluid API (SPEC.md §3), in the seed's own world units.
+#include <cmath>
 #include <cstring>
+#include <string>
 #include <stdexcept>
 #include <vector>
 
@@ -100,6 +102,36 @@ TEST(FluidApi, BadSettingsAreRejectedByName) {
     }
     EXPECT_EQ(fluid.getPointCounts(), 0u);
     EXPECT_THROW(fluid.init(100, {1, -1, -1}, {-1, 1, 1}, {0, 0, 0}, {0, 0, 0}, {0, -9.81f, 0}), std::invalid_argument);
+}
+
+// A forced time step far beyond stability: step() throws tide::DivergenceError naming the
+// particle, and what the facade hands out to draw holds no NaN or infinity.
+TEST(FluidApi, DivergenceThrowsAndTheDrawingBuffersStayFinite) {
+    Fluid fluid;
+    FluidSettings settings;
+    settings.threads = 1;
+    settings.solver.minDt = 0.05f;
+    settings.solver.maxDt = 0.05f;
+    fluid.init(65535, {-20, -20, -20}, {20, 20, 20}, {-20, -20, -20}, {0, 0, 20}, {0, -9.81f, 0}, settings);
+    bool diverged = false;
+    for (int frame = 0; frame < 40 && !diverged; ++frame) {
+        try {
+            fluid.step(0.05f);
+        } catch (const DivergenceError& e) {
+            diverged = true;
+            EXPECT_NE(std::string(e.what()).find("particle "), std::string::npos) << e.what();
+        }
+        if (frame % 2 == 0) (void)fluid.getPosData();  // a caller that draws every other frame
+    }
+    ASSERT_TRUE(diverged) << "a 0.05 s step of the classic solver did not diverge in 2 s";
+    EXPECT_THROW(fluid.step(0.05f), DivergenceError);
+    const float* pos = fluid.getPosData();
+    for (unsigned i = 0; i < 3 * fluid.getPointCounts(); ++i) ASSERT_TRUE(std::isfinite(pos[i])) << i;
+    const Point* points = fluid.getPointBuf();
+    for (unsigned i = 0; i < fluid.getPointCounts(); ++i) {
+        ASSERT_TRUE(std::isfinite(points[i].vel.x + points[i].vel.y + points[i].vel.z)) << i;
+        ASSERT_TRUE(std::isfinite(points[i].density) && std::isfinite(points[i].pressure)) << i;
+    }
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // worker that steps a World between the window's commands (play, pause, step, reset, push,
 // emitters) and publishes snapshots.
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <thread>
 
@@ -116,6 +117,38 @@ TEST(SimulationRunner, PlaysPausesStepsAndResets) {
     runner.send({view::Command::Kind::Reset});
     ASSERT_TRUE(waitFor(runner, s, status, [&] { return s.time == 0.0; }));
     EXPECT_EQ(s.stats.steps, 0u);
+}
+
+// A diverging world stops the worker with the guard's message; the window keeps the last
+// good snapshot (no step count past the divergence, nothing non-finite), and Reset recovers.
+TEST(SimulationRunner, DivergenceStopsWithTheMessageAndKeepsTheLastGoodSnapshot) {
+    const auto unstable = [] {
+        World world = smallTank(false);
+        WorldDef def = world.def();
+        def.solver.method = "wcsph";
+        def.solver.minDt = 0.05f;  // far beyond stability
+        def.solver.maxDt = 0.05f;
+        World w(def);
+        w.addMaterial(MaterialDef{});
+        BlockDef block;
+        block.max = glm::vec3(0.2f, 0.08f, 0.2f);
+        w.addBlock(block);
+        return w;
+    };
+    view::SimulationRunner runner(view::worldSource(unstable), true, 100.0);
+    render::Snapshot s;
+    view::RunnerStatus status;
+    ASSERT_TRUE(waitFor(runner, s, status, [&] { return !status.error.empty(); }));
+    EXPECT_NE(status.error.find("particle "), std::string::npos) << status.error;
+    EXPECT_FALSE(status.playing);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    runner.fetch(s, status);
+    for (std::uint32_t i = 0; i < s.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(s.position[i].x + s.position[i].y + s.position[i].z)) << i;
+        ASSERT_TRUE(std::isfinite(s.velocity[i].x + s.velocity[i].y + s.velocity[i].z)) << i;
+    }
+    runner.send({view::Command::Kind::Reset});
+    ASSERT_TRUE(waitFor(runner, s, status, [&] { return s.time == 0.0 && status.error.empty(); }));
 }
 
 TEST(SimulationRunner, RealTimeAtMostAtTheRequestedSpeed) {

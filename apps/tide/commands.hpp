@@ -21,6 +21,8 @@ struct RunOptions {
     std::string solver;                   ///< empty: the scene's
     bool force = false;
     bool quiet = false;
+    int checkpointEvery = 0;              ///< frames between checkpoints; 0: none
+    std::string resume;                   ///< output folder of a stopped run to continue; empty: a new run
 };
 
 struct RenderOptions {

@@ -24,10 +24,19 @@ int main(int argc, char** argv) {
     runApp->add_option("--solver", run.solver, "Solver, overriding the scene's solver.method");
     runApp->add_flag("--force", run.force, "Write into a folder that holds another run, replacing its frames");
     runApp->add_flag("--quiet", run.quiet, "No progress output");
+    runApp->add_option("--checkpoint-every", run.checkpointEvery,
+                       "Write OUT/checkpoint_NNNNN.tidecp every N frames (the newest two are kept)")
+        ->check(CLI::Range(1, 1 << 30));
+    runApp->add_option("--resume", run.resume,
+                       "Continue the stopped run in this folder from its newest checkpoint (same scene; it keeps its\n"
+                       "end time, formats, solver and checkpoint interval unless given again); its frames come out\n"
+                       "bit-identical to an uninterrupted run's");
     runApp->footer("On a terminal a progress bar shows simulated time, frame, particles, particle-steps/s and\n"
                    "the time left; otherwise one line per frame. Frame k (time k/fps) is written as\n"
                    "OUT/frame_NNNNN.<format>, with OUT/frames.pvd for ParaView and OUT/stats.json at the end.\n"
-                   "Exit codes: 0 success, 1 the run failed (e.g. diverged), 2 bad input.");
+                   "Every step is checked for NaN/Inf and runaway speeds; a diverged run stops naming the step,\n"
+                   "time, particle and quantity, keeping the frames and checkpoints written before.\n"
+                   "Exit codes: 0 success, 1 the run failed (e.g. diverged), 2 bad input (also a damaged checkpoint).");
 
     RenderOptions render;
     CLI::App* renderApp = app.add_subcommand("render", "Simulate a scene and draw its frames as PNG images (no display needed)");

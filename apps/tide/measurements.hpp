@@ -24,6 +24,13 @@ public:
     void sample(const World& world, double t);
     /// gauges.csv and probes.csv (only those the scene asks for) in `dir`.
     void write(const std::filesystem::path& dir) const;
+    /// The rows sampled so far, for a checkpoint, and taking them back on resume.
+    [[nodiscard]] const std::string& gaugeRows() const { return gaugeRows_; }
+    [[nodiscard]] const std::string& probeRows() const { return probeRows_; }
+    void restoreRows(std::string gaugeRows, std::string probeRows) {
+        gaugeRows_ = std::move(gaugeRows);
+        probeRows_ = std::move(probeRows);
+    }
 
 private:
     std::vector<io::GaugeDef> gauges_;

@@ -8,10 +8,34 @@ namespace tide::cli {
 
 namespace fs = std::filesystem;
 
-bool isRunOutput(const fs::path& file) {
+namespace {
+bool isFinishedOutput(const std::string& name) {
     static const std::regex frame(R"(frame_\d{5,}\.(vtu|ply|csv))");
+    static const std::regex checkpoint(R"(checkpoint_\d{5,}\.tidecp)");
+    return name == "frames.pvd" || name == "stats.json" || std::regex_match(name, frame) ||
+           std::regex_match(name, checkpoint);
+}
+
+/// The temporary name io::writeFileAtomically gives an output: `.NAME.tmp-PID-N`.
+bool isTemporaryOutput(const std::string& name) {
+    static const std::regex temporary(R"(\.(.+)\.tmp-\d+-\d+)");
+    std::smatch m;
+    return std::regex_match(name, m, temporary) &&
+           (isFinishedOutput(m[1].str()) || m[1] == "gauges.csv" || m[1] == "probes.csv");
+}
+}  // namespace
+
+bool isRunOutput(const fs::path& file) {
     const std::string name = file.filename().string();
-    return name == "frames.pvd" || name == "stats.json" || std::regex_match(name, frame);
+    return isFinishedOutput(name) || isTemporaryOutput(name);
+}
+
+void removeStaleTemporaries(const fs::path& dir) {
+    std::error_code ec;
+    std::vector<fs::path> stale;
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+        if (isTemporaryOutput(entry.path().filename().string())) stale.push_back(entry.path());
+    for (const fs::path& file : stale) fs::remove(file, ec);
 }
 
 void prepareOutputFolder(const fs::path& dir, bool force) {

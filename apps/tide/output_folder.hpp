@@ -16,7 +16,11 @@ public:
 /// with `force`, only tide's own outputs of the earlier run are removed.
 void prepareOutputFolder(const std::filesystem::path& dir, bool force);
 
-/// Whether a file name is one tide writes (frame_NNNNN.*, frames.pvd, stats.json).
+/// Whether a file name is one tide writes (frame_NNNNN.*, frames.pvd, stats.json,
+/// checkpoint_NNNNN.tidecp), or the temporary file of one that a killed run left behind.
 bool isRunOutput(const std::filesystem::path& file);
+
+/// Removes the temporary files (`.NAME.tmp-PID-N`) of tide's outputs that a killed run left.
+void removeStaleTemporaries(const std::filesystem::path& dir);
 
 }  // namespace tide::cli

@@ -1,15 +1,19 @@
 // `tide run`: simulate a scene, writing frame k at simulated time k/fps, then gauges.csv and
-// probes.csv (when the scene has gauges or probes) and stats.json.
+// probes.csv (when the scene has gauges or probes) and stats.json. With --checkpoint-every it
+// also writes checkpoints, from which --resume continues bit for bit.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
+#include <fstream>
+#include <regex>
 #include <sstream>
 
-#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include <tide/io/checkpoint.hpp>
 #include <tide/io/exporters.hpp>
 #include <tide/io/scene.hpp>
 
@@ -17,51 +21,13 @@
 #include "measurements.hpp"
 #include "output_folder.hpp"
 #include "progress.hpp"
+#include "run_checkpoints.hpp"
 
 namespace tide::cli {
 
 namespace fs = std::filesystem;
 
 namespace {
-
-/// The first particle with a non-finite or runaway state, described; empty when all is well.
-std::string findDivergence(const World& world) {
-    const ParticleStore& p = world.particles();
-    // No fluid particle of a sane run comes near this speed (sound speed ≫ flow speed).
-    const glm::vec3 extent = world.def().domainMax - world.def().domainMin;
-    const float runaway = 1e3f * std::max(1.0f, glm::length(extent));
-    for (std::uint32_t i = 0; i < p.size(); ++i) {
-        const char* quantity = nullptr;
-        if (!std::isfinite(p.position[i].x + p.position[i].y + p.position[i].z)) quantity = "position";
-        else if (!std::isfinite(p.velocity[i].x + p.velocity[i].y + p.velocity[i].z)) quantity = "velocity";
-        else if (!std::isfinite(p.density[i]) || !std::isfinite(p.pressure[i])) quantity = "density or pressure";
-        else if (glm::length(p.velocity[i]) > runaway) quantity = "speed (runaway)";
-        if (quantity) {
-            std::ostringstream out;
-            out << "particle " << p.id[i] << " has a bad " << quantity;
-            return out.str();
-        }
-    }
-    // A liquid compressed by half on average has collapsed (e.g. a forced time step far
-    // beyond stability): name its most compressed particle.
-    if (world.stats().meanCompression > 0.5f) {
-        std::uint32_t worst = 0;
-        float worstRatio = 0.0f;
-        for (std::uint32_t i = 0; i < p.size(); ++i) {
-            const float ratio = p.density[i] / world.materials()[p.material[i]].restDensity;
-            if (ratio > worstRatio) {
-                worstRatio = ratio;
-                worst = i;
-            }
-        }
-        std::ostringstream out;
-        out << "the fluid collapsed (mean compression " << 100.0f * world.stats().meanCompression
-            << " %): particle " << p.id[worst] << " has density " << p.density[worst] << " kg/m3, " << worstRatio
-            << " times its rest density";
-        return out.str();
-    }
-    return {};
-}
 
 std::string frameName(int frame, io::Format format) {
     char name[64];
@@ -91,6 +57,47 @@ void writeStats(const fs::path& file, const World& world, double wall, std::uint
     io::writeFileAtomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 
+/// CRC-32 of the scene file's bytes (0 if it cannot be read: loading it already worked).
+std::uint32_t sceneCrc(const std::string& file) {
+    std::ifstream in(file, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return io::crc32(text.str());
+}
+
+/// Bad input found while resuming: the message for stderr (exit 2).
+struct ResumeError {
+    std::string message;
+};
+
+/// The newest checkpoint of a stopped run and the run's progress in it.
+struct Resumption {
+    fs::path file;
+    io::Checkpoint checkpoint;
+    RunProgress progress;
+};
+
+/// Reads and checks the newest checkpoint in `dir`; throws ResumeError, changing nothing,
+/// when there is none or it is damaged.
+Resumption loadNewestCheckpoint(const fs::path& dir) {
+    const std::string flag = "--resume " + dir.string();
+    if (!fs::is_directory(dir)) throw ResumeError{flag + ": not a folder"};
+    const std::vector<fs::path> files = listCheckpoints(dir);
+    if (files.empty())
+        throw ResumeError{flag + ": no checkpoint (checkpoint_NNNNN.tidecp) in it; a run writes them with --checkpoint-every N"};
+    const std::string older = files.size() > 1 ? "; the older " + files[1].filename().string() +
+                                                     " remains: remove the damaged file to resume from it"
+                                               : "";
+    Resumption r{files[0], {}, {}};
+    try {
+        r.checkpoint = io::readCheckpoint(files[0]);
+        r.progress = decodeRunProgress(r.checkpoint.application);
+    } catch (const std::exception& e) {
+        throw ResumeError{std::string(e.what()) + "; refusing to resume, nothing was changed" + older};
+    }
+    return r;
+}
+
 }  // namespace
 
 int runCommand(const RunOptions& o) {
@@ -101,33 +108,79 @@ int runCommand(const RunOptions& o) {
         reportSceneProblems(o.scene, e.problems);
         return kExitBadInput;
     }
+    const bool resuming = !o.resume.empty();
+    std::optional<Resumption> resumed;
+    try {
+        if (resuming) resumed = loadNewestCheckpoint(o.resume);
+    } catch (const ResumeError& e) {
+        std::fprintf(stderr, "tide: %s\n", e.message.c_str());
+        return kExitBadInput;
+    }
+    // A resumed run keeps the choices it was started with, unless they are given again.
+    const double sceneEndTime = scene.endTime;
     if (o.endTime) scene.endTime = *o.endTime;
-    if (!o.solver.empty()) {
+    else if (resumed) scene.endTime = resumed->progress.endTime;
+    const std::string solver = !o.solver.empty() ? o.solver : resumed ? resumed->progress.solver : scene.world.solver.method;
+    if (solver != scene.world.solver.method) {
         const auto known = solverNames();
-        if (std::find(known.begin(), known.end(), o.solver) == known.end()) {
-            std::fprintf(stderr, "--solver: unknown solver \"%s\"\n", o.solver.c_str());
+        if (std::find(known.begin(), known.end(), solver) == known.end()) {
+            std::fprintf(stderr, "--solver: unknown solver \"%s\"\n", solver.c_str());
             return kExitBadInput;
         }
-        scene.world.solver.method = o.solver;
+        scene.world.solver.method = solver;
     }
-    if (!o.formats.empty()) {
+    const std::vector<std::string>& formats = !o.formats.empty() ? o.formats
+                                              : resumed                ? resumed->progress.formats
+                                                                       : std::vector<std::string>{};
+    if (!formats.empty()) {
         scene.output.formats.clear();
-        for (const std::string& name : o.formats)
+        for (const std::string& name : formats)
             if (auto f = io::parseFormat(name);
                 f && std::find(scene.output.formats.begin(), scene.output.formats.end(), *f) == scene.output.formats.end())
                 scene.output.formats.push_back(*f);
     }
     scene.world.threads = o.threads;
-    const fs::path dir = o.out.empty() ? fs::path("out") / fs::path(o.scene).stem() : fs::path(o.out);
+    if (resuming && !o.out.empty() && fs::weakly_canonical(o.out) != fs::weakly_canonical(o.resume)) {
+        std::fprintf(stderr, "--out %s: a resumed run writes into its own folder (--resume %s); drop --out\n",
+                     o.out.c_str(), o.resume.c_str());
+        return kExitBadInput;
+    }
+    const fs::path dir = resuming ? fs::path(o.resume)
+                         : o.out.empty() ? fs::path("out") / fs::path(o.scene).stem()
+                                         : fs::path(o.out);
 
-    // A longer end time lets emitters emit more: size the world for it.
+    // A longer end time lets emitters emit more: size the world for it, and refuse up front
+    // what this machine cannot hold.
+    if (scene.endTime != sceneEndTime)
+        if (const std::string shortfall = io::memoryShortfall(scene); !shortfall.empty()) {
+            std::fprintf(stderr, "%s: end time %g s: %s\n", o.scene.c_str(), scene.endTime, shortfall.c_str());
+            return kExitBadInput;
+        }
     scene.world.capacity = static_cast<std::uint32_t>(
         std::min<std::uint64_t>(io::estimate(scene).totalParticles + 1, 0xfffffff0ull));
 
     std::optional<World> world;
+    RunProgress done;  // what earlier sessions of this run did (nothing for a new run)
+    const std::uint32_t crc = sceneCrc(o.scene);
     try {
         world.emplace(io::buildWorld(scene));
-        prepareOutputFolder(dir, o.force);
+        if (resumed) {
+            done = resumed->progress;
+            const std::string file = resumed->file.string();
+            if (done.sceneCrc != crc)
+                throw ResumeError{file + ": written for another version of the scene file (its CRC-32 differs); "
+                                  "resume with the scene the run started with"};
+            if (done.solver != solver)
+                throw ResumeError{file + ": written by the " + done.solver + " solver, --solver asks for " + solver};
+            try {
+                world->restoreState(std::move(resumed->checkpoint.world));
+            } catch (const std::invalid_argument& e) {
+                throw ResumeError{file + ": " + e.what()};
+            }
+            removeStaleTemporaries(dir);  // a killed run's half-written files
+        } else {
+            prepareOutputFolder(dir, o.force);
+        }
     } catch (const io::SceneError& e) {
         reportSceneProblems(o.scene, e.problems);
         return kExitBadInput;
@@ -137,34 +190,42 @@ int runCommand(const RunOptions& o) {
     } catch (const OutputFolderError& e) {
         std::fprintf(stderr, "%s\n", e.what());
         return kExitBadInput;
+    } catch (const ResumeError& e) {
+        std::fprintf(stderr, "tide: %s\n", e.message.c_str());
+        return kExitBadInput;
     }
 
     const int frames = static_cast<int>(std::floor(scene.endTime * scene.output.fps + 1e-9));
+    const int checkpointEvery = o.checkpointEvery > 0 ? o.checkpointEvery : done.checkpointEvery;
+    std::vector<std::string> formatNames;
+    for (const io::Format f : scene.output.formats) formatNames.emplace_back(io::extension(f));
+    const int firstFrame = resuming ? done.frame + 1 : 0;
     const auto start = std::chrono::steady_clock::now();
+    const auto wallSoFar = [&] {
+        return done.wallSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     Progress progress(scene.endTime, frames, o.quiet);
     io::PvdWriter pvd(dir / "frames.pvd");
     const bool vtu = std::find(scene.output.formats.begin(), scene.output.formats.end(), io::Format::Vtu) !=
                      scene.output.formats.end();
-    std::uint64_t particleSteps = 0;
-    std::uint32_t lost = 0;
+    if (vtu)
+        for (int frame = 0; frame < firstFrame; ++frame) pvd.add(frame / scene.output.fps, frameName(frame, io::Format::Vtu));
+    std::uint64_t particleSteps = done.particleSteps;
+    std::uint64_t sessionSteps = 0;  // this session's, for the progress rate
+    std::uint32_t lost = done.lost;
+    bool reportedFull = false;
     Measurements measurements(scene);
+    measurements.restoreRows(done.gaugeRows, done.probeRows);
+    int lastFrame = firstFrame - 1;
     try {
-        for (int frame = 0; frame <= frames; ++frame) {
+        for (int frame = firstFrame; frame <= frames; ++frame) {
             if (frame > 0) {
                 const double target = frame / scene.output.fps;
                 world->advance(target - world->time(), [&] {
                     particleSteps += world->particles().size();
-                    progress.step(world->time(), frame, world->particles().size(), particleSteps);
+                    sessionSteps += world->particles().size();
+                    progress.step(world->time(), frame, world->particles().size(), sessionSteps);
                 });
-                const std::string bad = findDivergence(*world);
-                if (!bad.empty()) {
-                    progress.finish();
-                    measurements.write(dir);  // the rows up to the last good frame
-                    std::fprintf(stderr, "tide: the simulation diverged by step %llu (t = %.6f s): %s; frames up to %d are kept in %s\n",
-                                 static_cast<unsigned long long>(world->stats().steps), world->time(), bad.c_str(),
-                                 frame - 1, dir.string().c_str());
-                    return kExitRunFailed;
-                }
             }
             for (io::Format format : scene.output.formats)
                 io::writeFrame(dir / frameName(frame, format), format, world->particles());
@@ -174,15 +235,45 @@ int runCommand(const RunOptions& o) {
             }
             measurements.sample(*world, world->time());
             lost = std::max(lost, world->countEscapedParticles());
-            progress.frame(world->time(), frame, world->particles().size(), particleSteps);
+            lastFrame = frame;
+            if (!reportedFull && world->stats().emitterCapacityHits > 0) {
+                reportedFull = true;  // once: an emitter at capacity would say it every layer
+                progress.finish();
+                std::fprintf(stderr, "tide: warning: the world is full (%u particles, its capacity): emitters stop emitting\n",
+                             world->def().capacity);
+            }
+            if (checkpointEvery > 0 && frame > 0 && frame % checkpointEvery == 0) {
+                const RunProgress now{frame,
+                                      particleSteps,
+                                      lost,
+                                      wallSoFar(),
+                                      measurements.gaugeRows(),
+                                      measurements.probeRows(),
+                                      crc,
+                                      scene.world.solver.method,
+                                      checkpointEvery,
+                                      scene.endTime,
+                                      formatNames};
+                io::writeCheckpoint(checkpointFile(dir, frame), world->saveState(), encodeRunProgress(now));
+                pruneCheckpoints(dir);
+            }
+            progress.frame(world->time(), frame, world->particles().size(), sessionSteps);
         }
         progress.finish();
-        const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double wall = wallSoFar();
         measurements.write(dir);
         writeStats(dir / "stats.json", *world, wall, particleSteps, lost);
         if (!o.quiet)
             std::printf("%d frames of %u particles in %s (%.1f s wall, %.2f M particle-steps/s)\n", frames + 1,
                         world->particles().size(), dir.string().c_str(), wall, particleSteps / std::max(wall, 1e-9) / 1e6);
+    } catch (const DivergenceError& e) {
+        progress.finish();
+        measurements.write(dir);  // the rows up to the last good frame
+        const std::vector<fs::path> checkpoints = listCheckpoints(dir);
+        std::fprintf(stderr, "tide: the simulation diverged at %s; frames up to %d%s are kept in %s\n", e.what(), lastFrame,
+                     checkpoints.empty() ? "" : (" and " + checkpoints[0].filename().string()).c_str(),
+                     dir.string().c_str());
+        return kExitRunFailed;
     } catch (const std::runtime_error& e) {
         progress.finish();
         std::fprintf(stderr, "tide: %s\n", e.what());

@@ -92,6 +92,9 @@ public:
     MaterialIndex addMaterial(const Material& material);
 
     /// Advance the simulation by frameTime seconds (sub-stepped as stability requires).
+    /// Throws tide::DivergenceError if a step diverges (see World::step); the particle
+    /// records and positions then keep the last state read before it (or, if none was read
+    /// since, that state with every non-finite value replaced by 0), so nothing draws NaN.
     void step(float frameTime);
 
     [[nodiscard]] unsigned getPointStride() const { return sizeof(Point); }

@@ -43,6 +43,10 @@ public:
     void permute(std::span<const std::uint32_t> order);
     /// Drop every particle.
     void clear();
+    /// The id the next appended particle gets.
+    [[nodiscard]] std::uint32_t nextId() const { return nextId_; }
+    /// Continue numbering at `next` (restoring a saved store; must exceed every id in it).
+    void setNextId(std::uint32_t next) { nextId_ = next; }
 
 private:
     std::uint32_t nextId_ = 0;

@@ -5,7 +5,9 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -56,6 +58,68 @@ struct ProbeSample {
     float density;       ///< kg/m³
     float pressure;      ///< Pa
     glm::vec3 velocity;  ///< m/s
+};
+
+/// A quantity the per-step divergence guard found bad.
+enum class DivergedQuantity {
+    Position,     ///< not finite
+    Velocity,     ///< not finite
+    Density,      ///< not finite
+    Pressure,     ///< not finite
+    Speed,        ///< finite but runaway: |v| Δt beyond kRunawaySupports support radii
+    Compression,  ///< the whole fluid collapsed: mean compression beyond kCollapsedCompression
+};
+
+/// A particle moving further than this many kernel supports in one step has left every
+/// neighbour it had: no stable time step (CFL ≤ 1 allows one support at most) does that.
+inline constexpr float kRunawaySupports = 4.0f;
+/// A liquid compressed by half on average has collapsed (e.g. a forced time step far beyond
+/// stability): its mean max(ρ − ρ0, 0)/ρ0 above this stops the run.
+inline constexpr float kCollapsedCompression = 0.5f;
+
+/// Where and how a run diverged: the step, and the first particle (lowest index) at fault.
+struct Divergence {
+    std::uint64_t step = 0;      ///< the step that produced it (WorldStats::steps, counting it)
+    double time = 0.0;           ///< s, at the end of that step
+    double dt = 0.0;             ///< s, that step's length
+    std::uint32_t particle = 0;  ///< index in the particle store when it was found
+    std::uint32_t id = 0;        ///< the particle's stable id
+    DivergedQuantity quantity = DivergedQuantity::Position;
+    /// The bad value: the non-finite component; Speed: |v| m/s; Compression: ρ kg/m³ of the
+    /// most compressed particle.
+    float value = 0.0f;
+    /// The bound it broke: Speed: kRunawaySupports·h/Δt, m/s; Compression: the fluid's mean
+    /// compression (above kCollapsedCompression); 0 for non-finite values.
+    float limit = 0.0f;
+    /// One line for people, e.g. "step 12 (t = 0.034 s): particle 5 (id 7) has a non-finite velocity (nan)".
+    [[nodiscard]] std::string describe() const;
+};
+
+/// Thrown by World::step when the state it produced has diverged; the World keeps the bad
+/// state for inspection but refuses further steps until clear() or restoreState().
+class DivergenceError : public std::runtime_error {
+public:
+    explicit DivergenceError(const Divergence& d) : std::runtime_error(d.describe()), divergence(d) {}
+    Divergence divergence;
+};
+
+/// What an emitter has accumulated during a run (its EmitterDef is the scene's).
+struct EmitterProgress {
+    bool active = true;
+    double travelled = -1.0;  ///< stream length since the last layer, m; < 0 before its first step
+};
+
+/// Everything of a World that evolves while it runs: restoring it into a World built from the
+/// same definitions continues the run bit for bit (a checkpoint). Wave makers need nothing
+/// here: their motion is a function of time (random phases come from their seed).
+struct WorldState {
+    double time = 0.0;                    ///< s
+    float soundSpeed = 0.0f;              ///< m/s, 0 until the first step resolves it
+    std::int32_t stepsSinceReorder = 0;   ///< the particle order is part of the arithmetic
+    WorldStats stats;
+    ParticleStore particles;              ///< every array, in the store's current order, and the next id
+    std::vector<EmitterProgress> emitters;
+    std::vector<double> solverState;      ///< scalars the solver carries between steps (see Solver)
 };
 
 /// Names of the solvers World accepts in SolverDef::method.
@@ -123,6 +187,8 @@ public:
     [[nodiscard]] std::uint32_t emitterCount() const;
 
     /// Take one time step of adaptive length, at most maxDt seconds; returns its length.
+    /// Every step checks the state it produced (non-finite values, runaway speed, collapse)
+    /// and throws DivergenceError naming the step, time, particle and quantity when it is bad.
     double step(double maxDt);
     /// Advance exactly `duration` seconds in as many adaptive steps as needed, calling
     /// `afterStep` (if given) after each one, e.g. to report progress.
@@ -141,6 +207,16 @@ public:
     [[nodiscard]] int threads() const;
     /// Remove every particle and emitter, keep materials, reset time to 0.
     void clear();
+
+    /// The divergence the last step found, if any (cleared by clear() and restoreState()).
+    [[nodiscard]] const std::optional<Divergence>& divergence() const;
+    /// A copy of everything that evolves (see WorldState), for checkpoints.
+    [[nodiscard]] WorldState saveState() const;
+    /// Continue from a saved state. The World must have been built from the same definitions
+    /// (materials, emitters, solver); a state that does not fit them (array sizes, material
+    /// indices, emitter count, capacity, solver scalars) throws std::invalid_argument naming
+    /// the mismatch and leaves the World unchanged.
+    void restoreState(WorldState state);
 
 private:
     struct Impl;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <span>
 #include <stdexcept>
 
@@ -12,6 +13,7 @@
 #include "boundary/damping_zone.hpp"
 #include "boundary/obstacles.hpp"
 #include "boundary/wall_box.hpp"
+#include "core/divergence_guard.hpp"
 #include "core/field_sampling.hpp"
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
@@ -120,6 +122,7 @@ struct World::Impl {
     float soundSpeed = 0.0f;  ///< resolved at the first step when SolverDef::soundSpeed is 0
     int stepsSinceReorder = 0;
     WorldStats stats;
+    std::optional<Divergence> divergence;  ///< set by the step that diverged
 
     explicit Impl(const WorldDef& d)
         : def(d), threads(resolveThreadCount(d.threads)), h(d.particleSpacing * d.supportRatio),
@@ -216,29 +219,32 @@ struct World::Impl {
 
     void emit(double t0, double dt) {
         for (EmitterState& emitter : emitters) {
-            emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
-                if (particles.size() + countLattice(layer) > def.capacity) {
-                    ++stats.emitterCapacityHits;
-                    return;
-                }
+            const double dropped = emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
+                if (particles.size() + countLattice(layer) > def.capacity) return false;
                 appendLattice(layer, emitter.def.velocity, emitter.def.material);
+                return true;
             });
+            stats.emitterCapacityHits += dropped < 1.8e19 ? static_cast<std::uint64_t>(dropped) : ~std::uint64_t{0};
         }
     }
 
-    void updateStats(double dt) {
+    /// The step's statistics; returns the divergence the same pass over the particles found.
+    std::optional<Divergence> updateStats(double dt) {
         ++stats.steps;
         stats.lastDt = dt;
         stats.dtMin = stats.steps == 1 ? dt : std::min(stats.dtMin, dt);
         stats.dtMax = std::max(stats.dtMax, dt);
         stats.dtSum += dt;
+        DivergenceGuard guard(dt, h);
         double errorSum = 0.0, compressionSum = 0.0, maxSpeed2 = 0.0;
         for (std::uint32_t i = 0; i < particles.size(); ++i) {
             const double rho0 = materials[particles.material[i]].restDensity;
             const double error = (particles.density[i] - rho0) / rho0;
             errorSum += std::abs(error);
             compressionSum += std::max(error, 0.0);
-            maxSpeed2 = std::max(maxSpeed2, static_cast<double>(glm::dot(particles.velocity[i], particles.velocity[i])));
+            const double speed2 = glm::dot(particles.velocity[i], particles.velocity[i]);
+            maxSpeed2 = std::max(maxSpeed2, speed2);
+            guard.check(particles, i, speed2);
         }
         const double n = std::max<double>(1.0, particles.size());
         stats.meanDensityError = static_cast<float>(errorSum / n);
@@ -247,6 +253,26 @@ struct World::Impl {
         stats.maxMeanDensityError = std::max(stats.maxMeanDensityError, stats.meanDensityError);
         stats.maxMeanCompression = std::max(stats.maxMeanCompression, stats.meanCompression);
         stats.sumMeanDensityError += stats.meanDensityError;
+        if (!guard.found() && stats.meanCompression > kCollapsedCompression) guard.found() = mostCompressed();
+        return guard.found();
+    }
+
+    /// The collapsed fluid's most compressed particle, as a Divergence.
+    [[nodiscard]] Divergence mostCompressed() const {
+        Divergence d;
+        d.quantity = DivergedQuantity::Compression;
+        d.limit = stats.meanCompression;
+        float worstRatio = -1.0f;
+        for (std::uint32_t i = 0; i < particles.size(); ++i) {
+            const float ratio = particles.density[i] / materials[particles.material[i]].restDensity;
+            if (ratio > worstRatio) {
+                worstRatio = ratio;
+                d.particle = i;
+                d.id = particles.id[i];
+                d.value = particles.density[i];
+            }
+        }
+        return d;
     }
 };
 
@@ -475,6 +501,7 @@ double World::step(double maxDt) {
     if (!(maxDt > 0.0))
         throw std::invalid_argument("maxDt: must be > 0, got " + std::to_string(maxDt));
     Impl& w = *impl_;
+    if (w.divergence) throw DivergenceError(*w.divergence);  // stepping garbage makes more garbage
     PhaseClock clock(w.stats.phaseSeconds);
     w.resolveSoundSpeed();
     w.moveBoundaries(w.time);
@@ -507,10 +534,17 @@ double World::step(double maxDt) {
         parallelFor(w.particles.size(), w.threads, [&](std::uint32_t i) {
             w.particles.position[i] = w.periodic.wrap(w.particles.position[i]);
         });
-    w.updateStats(dt);
+    std::optional<Divergence> diverged = w.updateStats(dt);
     w.emit(w.time, dt);
     w.time += dt;
     clock.lap(Phase::Integration);
+    if (diverged) {
+        diverged->step = w.stats.steps;
+        diverged->time = w.time;
+        diverged->dt = dt;
+        w.divergence = diverged;
+        throw DivergenceError(*diverged);
+    }
     return dt;
 }
 
@@ -542,6 +576,87 @@ void World::clear() {
     w.stats = WorldStats{};
     w.soundSpeed = w.def.solver.soundSpeed;
     w.stepsSinceReorder = 0;
+    w.divergence.reset();
+}
+
+const std::optional<Divergence>& World::divergence() const { return impl_->divergence; }
+
+WorldState World::saveState() const {
+    const Impl& w = *impl_;
+    WorldState s;
+    s.time = w.time;
+    s.soundSpeed = w.soundSpeed;
+    s.stepsSinceReorder = w.stepsSinceReorder;
+    s.stats = w.stats;
+    s.particles = w.particles;
+    for (const EmitterState& e : w.emitters) s.emitters.push_back({e.active, e.travelled});
+    s.solverState = w.solver->carriedState();
+    return s;
+}
+
+namespace {
+[[noreturn]] void misfit(const std::string& what) {
+    throw std::invalid_argument("state: " + what + " (was it saved from another scene?)");
+}
+
+void checkFits(const WorldState& s, std::size_t materials, std::size_t emitters, std::uint32_t capacity) {
+    if (!std::isfinite(s.time) || s.time < 0.0) misfit("time must be finite and >= 0, got " + std::to_string(s.time));
+    if (!std::isfinite(s.soundSpeed) || s.soundSpeed < 0.0f) misfit("sound speed must be finite and >= 0");
+    if (s.stepsSinceReorder < 0) misfit("steps since reorder must be >= 0");
+    const ParticleStore& p = s.particles;
+    const std::size_t n = p.position.size();
+    const std::size_t sizes[] = {p.velocity.size(), p.acceleration.size(), p.density.size(), p.pressure.size(),
+                                 p.mass.size(), p.warmKappa.size(), p.warmDivergence.size(), p.material.size(),
+                                 p.id.size()};
+    for (const std::size_t size : sizes)
+        if (size != n) misfit("particle arrays differ in length (" + std::to_string(size) + " vs " + std::to_string(n) + ")");
+    if (n > capacity) misfit(std::to_string(n) + " particles exceed the capacity " + std::to_string(capacity));
+    // A saved state passed the divergence guard: anything else is damage, and would, e.g.,
+    // give the grid an infinite extent.
+    constexpr float kFar = 1e18f;
+    const auto sane = [&](const glm::vec3& v) {
+        return std::abs(v.x) < kFar && std::abs(v.y) < kFar && std::abs(v.z) < kFar;  // false for NaN
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!sane(p.position[i]) || !sane(p.velocity[i]) || !sane(p.acceleration[i]) || !std::isfinite(p.density[i]) ||
+            !std::isfinite(p.pressure[i]) || !(p.mass[i] > 0.0f) || !std::isfinite(p.mass[i]) ||
+            !std::isfinite(p.warmKappa[i]) || !std::isfinite(p.warmDivergence[i]))
+            misfit("particle " + std::to_string(i) + " has a non-finite or absurd value");
+        if (p.material[i] >= materials)
+            misfit("particle " + std::to_string(i) + " has material " + std::to_string(p.material[i]) + " of " +
+                   std::to_string(materials));
+        if (p.id[i] >= p.nextId())
+            misfit("particle " + std::to_string(i) + " has id " + std::to_string(p.id[i]) + ", not below the next id " +
+                   std::to_string(p.nextId()));
+    }
+    if (s.emitters.size() != emitters)
+        misfit(std::to_string(s.emitters.size()) + " emitters saved, the world has " + std::to_string(emitters));
+    for (const EmitterProgress& e : s.emitters)
+        if (!std::isfinite(e.travelled)) misfit("an emitter's travelled distance is not finite");
+    for (const double x : s.solverState)
+        if (!std::isfinite(x)) misfit("a solver scalar is not finite");
+}
+}  // namespace
+
+void World::restoreState(WorldState state) {
+    Impl& w = *impl_;
+    checkFits(state, w.materials.size(), w.emitters.size(), w.def.capacity);
+    const std::vector<double> solverBefore = w.solver->carriedState();
+    if (!w.solver->restoreCarriedState(state.solverState))
+        misfit(std::to_string(state.solverState.size()) + " solver scalars saved, the " + w.def.solver.method +
+               " solver carries " + std::to_string(solverBefore.size()));
+    // Nothing below can fail: the World changes all at once or not at all.
+    w.time = state.time;
+    w.soundSpeed = state.soundSpeed;
+    w.stepsSinceReorder = state.stepsSinceReorder;
+    w.stats = state.stats;
+    w.particles = std::move(state.particles);
+    for (std::size_t e = 0; e < w.emitters.size(); ++e) {
+        w.emitters[e].active = state.emitters[e].active;
+        w.emitters[e].travelled = state.emitters[e].travelled;
+    }
+    w.divergence.reset();
+    w.moveBoundaries(w.time);
 }
 
 }  // namespace tide

@@ -1,5 +1,6 @@
 #include <tide/fluid.hpp>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -18,6 +19,10 @@ MaterialDef toMaterialDef(const Material& m, float waterViscosity, std::string n
     def.color = m.color;
     return def;
 }
+
+/// A diverged world may hold NaN or infinities; what the facade hands out to draw never does.
+float finite(float v) { return std::isfinite(v) ? v : 0.0f; }
+glm::vec3 finite(const glm::vec3& v) { return {finite(v.x), finite(v.y), finite(v.z)}; }
 
 bool hasVolume(const glm::vec3& min, const glm::vec3& max) {
     return max.x > min.x && max.y > min.y && max.z > min.z;
@@ -116,7 +121,13 @@ void Fluid::step(float frameTime) {
     if (!world_) return;
     if (!(frameTime >= 0.0f) || !std::isfinite(frameTime))
         throw std::invalid_argument("Fluid::step frameTime: must be finite and >= 0, got " + show(frameTime));
-    world_->advance(frameTime);
+    try {
+        world_->advance(frameTime);
+    } catch (const DivergenceError&) {
+        // The caches still hold the last frame the caller read, if it read one.
+        for (const TickEmitter& e : tickEmitters_) world_->setEmitterActive(e.id, false);
+        throw;
+    }
     // A tick emitter runs for the frame it was called in; the next call switches it on again.
     for (const TickEmitter& e : tickEmitters_) world_->setEmitterActive(e.id, false);
     invalidateCaches();
@@ -131,8 +142,8 @@ const Point* Fluid::getPointBuf() const {
         const float toUnits = 1.0f / settings_.metresPerUnit;
         points_.resize(p.size());
         for (std::uint32_t i = 0; i < p.size(); ++i)
-            points_[i] = Point{p.position[i] * toUnits, p.velocity[i], p.density[i], p.pressure[i], p.material[i], 0,
-                               p.id[i]};
+            points_[i] = Point{finite(p.position[i]) * toUnits, finite(p.velocity[i]), finite(p.density[i]),
+                               finite(p.pressure[i]), p.material[i], 0, p.id[i]};
         pointsStale_ = false;
     }
     return points_.data();
@@ -145,9 +156,10 @@ float* Fluid::getPosData() {
         const float toUnits = 1.0f / settings_.metresPerUnit;
         positions_.resize(std::size_t{3} * p.size());
         for (std::uint32_t i = 0; i < p.size(); ++i) {
-            positions_[3 * i + 0] = p.position[i].x * toUnits;
-            positions_[3 * i + 1] = p.position[i].y * toUnits;
-            positions_[3 * i + 2] = p.position[i].z * toUnits;
+            const glm::vec3 x = finite(p.position[i]) * toUnits;
+            positions_[3 * i + 0] = x.x;
+            positions_[3 * i + 1] = x.y;
+            positions_[3 * i + 2] = x.z;
         }
         positionsStale_ = false;
     }

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include <unistd.h>
@@ -35,25 +36,48 @@ std::uint64_t availableMemoryBytes() {
     return pages > 0 && size > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(size) : ~0ull;
 }
 
+namespace {
+constexpr std::uint64_t kMaxCount = std::numeric_limits<std::uint64_t>::max();
+/// A non-negative double as a count, saturating at 2^64 − 1 (the plain cast is undefined there).
+std::uint64_t saturatingCount(double x) {
+    return !(x < 1.8e19) ? kMaxCount : static_cast<std::uint64_t>(std::max(x, 0.0));
+}
+std::uint64_t saturatingAdd(std::uint64_t a, std::uint64_t b) { return a > kMaxCount - b ? kMaxCount : a + b; }
+}  // namespace
+
+std::string memoryShortfall(const Scene& scene) {
+    const SceneEstimate size = estimate(scene);
+    const std::uint64_t available = availableMemoryBytes();
+    if (size.bytes <= available) return {};
+    std::ostringstream msg;
+    msg << "the scene needs about " << size.totalParticles << " particles and " << (size.bytes >> 20)
+        << " MiB, more than the " << (available >> 20) << " MiB this machine has free";
+    return msg.str();
+}
+
 SceneEstimate estimate(const Scene& scene) {
     SceneEstimate e;
     e.initialParticles.assign(scene.materials.size(), 0);
     e.emittedParticles.assign(scene.materials.size(), 0);
     const float s = scene.world.particleSpacing;
-    for (const BlockDef& b : scene.blocks) e.initialParticles[b.material] += Lattice(b.min, b.max, s).size();
+    for (const BlockDef& b : scene.blocks)
+        e.initialParticles[b.material] = saturatingAdd(e.initialParticles[b.material], Lattice(b.min, b.max, s).size());
     for (const EmitterDef& em : scene.emitters) {
         const double active = std::min(em.end, scene.endTime) - em.start;
         if (active <= 0.0) continue;
+        // In double, saturating: a fast jet over a long end time overflows 64 bits (a fuzzed
+        // scene did: the cast's result was undefined and the estimate said 8 particles).
         const double layers = std::floor(glm::length(em.velocity) * active / s) + 1.0;
-        e.emittedParticles[em.material] += static_cast<std::uint64_t>(layers) * Lattice(em.min, em.max, s).size();
+        const double emitted = layers * static_cast<double>(Lattice(em.min, em.max, s).size());
+        e.emittedParticles[em.material] = saturatingAdd(e.emittedParticles[em.material], saturatingCount(emitted));
     }
     for (std::size_t m = 0; m < scene.materials.size(); ++m)
-        e.totalParticles += e.initialParticles[m] + e.emittedParticles[m];
+        e.totalParticles = saturatingAdd(e.totalParticles, saturatingAdd(e.initialParticles[m], e.emittedParticles[m]));
     // Boundary particles: the container's shell, a few layers deep, ~40 bytes each.
     const glm::vec3 extent = (scene.world.domainMax - scene.world.domainMin) / s;
     const double shell = 2.0 * (double{extent.x} * extent.y + double{extent.y} * extent.z + double{extent.z} * extent.x) *
                          std::ceil(scene.world.supportRatio);
-    e.bytes = e.totalParticles * kBytesPerParticle + static_cast<std::uint64_t>(shell * 40.0);
+    e.bytes = saturatingCount(static_cast<double>(e.totalParticles) * kBytesPerParticle + shell * 40.0);
     return e;
 }
 

@@ -594,6 +594,25 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
         std::ostringstream out;
         out << source << ':' << line << ':' << column << ": " << message;
         throw SceneError({out.str()});
+    } catch (const json::out_of_range& e) {
+        // A number beyond double ("1e400"): nlohmann names the literal but not where it is.
+        // Found by fuzzing: it escaped as an uncaught exception and aborted `tide validate`.
+        const std::string message = e.what();
+        const auto open = message.find('\''), close = message.rfind('\'');
+        const std::string literal = open < close ? message.substr(open + 1, close - open - 1) : std::string();
+        const auto at = literal.empty() ? std::string_view::npos : text.find(literal);
+        std::size_t line = 1, column = 1;
+        for (std::size_t k = 0; at != std::string_view::npos && k < at; ++k) {
+            if (text[k] == '\n') {
+                ++line;
+                column = 1;
+            } else {
+                ++column;
+            }
+        }
+        std::ostringstream out;
+        out << source << ':' << line << ':' << column << ": number " << literal << " is out of range";
+        throw SceneError({out.str()});
     }
 
     Reader r;
@@ -733,12 +752,9 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
 
     if (r.problems.empty()) {
         const SceneEstimate size = estimate(scene);
-        const std::uint64_t available = availableMemoryBytes();
-        if (size.bytes > available) {
+        if (const std::string shortfall = memoryShortfall(scene); !shortfall.empty()) {
             std::ostringstream msg;
-            msg << "the scene needs about " << size.totalParticles << " particles and " << (size.bytes >> 20)
-                << " MiB, more than the " << (available >> 20) << " MiB this machine has free (particle_spacing "
-                << w.particleSpacing / scale << ")";
+            msg << shortfall << " (particle_spacing " << w.particleSpacing / scale << ")";
             r.fail("particle_spacing", msg.str());
         }
         if (size.totalParticles > 0xfffffff0ull) r.fail("particle_spacing", "more than 2^32 particles");

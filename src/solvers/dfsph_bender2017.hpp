@@ -34,6 +34,12 @@ public:
     [[nodiscard]] std::string_view name() const override { return "dfsph"; }
     [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::CubicSpline; }
     double step(StepContext& ctx) override;
+    [[nodiscard]] std::vector<double> carriedState() const override { return {lastDt_}; }
+    bool restoreCarriedState(std::span<const double> state) override {
+        if (state.size() != 1) return false;
+        lastDt_ = state[0];
+        return true;
+    }
 
 private:
     /// Densities, kernel factors of this step's pairs and the packed positions the iterations read.

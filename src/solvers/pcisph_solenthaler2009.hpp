@@ -29,6 +29,12 @@ public:
     [[nodiscard]] std::string_view name() const override { return "pcisph"; }
     [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::CubicSpline; }
     double step(StepContext& ctx) override;
+    [[nodiscard]] std::vector<double> carriedState() const override { return {dtCap_}; }
+    bool restoreCarriedState(std::span<const double> state) override {
+        if (state.size() != 1) return false;
+        dtCap_ = state[0];
+        return true;
+    }
 
 private:
     struct Solve {

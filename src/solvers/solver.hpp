@@ -70,6 +70,11 @@ public:
     [[nodiscard]] virtual bool usesWallPressure() const { return true; }
     /// Returns the length of the step taken, s.
     virtual double step(StepContext& ctx) = 0;
+    /// Scalars the solver carries from one step to the next (not per particle: those live in
+    /// the ParticleStore), for checkpoints; restoring them continues the run bit for bit.
+    [[nodiscard]] virtual std::vector<double> carriedState() const { return {}; }
+    /// Takes back what carriedState() gave; false (changing nothing) if it has the wrong size.
+    virtual bool restoreCarriedState(std::span<const double> state) { return state.empty(); }
 };
 
 /// Creates the solver called `name`; throws std::invalid_argument for an unknown name.

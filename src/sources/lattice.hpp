@@ -21,13 +21,17 @@ struct Lattice {
         for (int axis = 0; axis < 3; ++axis) {
             const float extent = max[axis] - min[axis];
             // The small slack absorbs round-off in extents that are whole multiples of the spacing.
-            const auto n = static_cast<std::uint32_t>(std::floor(extent / spacing + 1e-3f));
-            count[axis] = n > 0 ? n : 1;
+            const float cells = std::floor(extent / spacing + 1e-3f);
+            // Saturate: beyond 2^32 the cast is undefined (a tiny spacing in a fuzzed scene); NaN gives 1.
+            const std::uint32_t n = cells >= 4.0e9f ? 4000000000u : cells >= 1.0f ? static_cast<std::uint32_t>(cells) : 1u;
+            count[axis] = n;
             first[axis] = min[axis] + 0.5f * (extent - static_cast<float>(count[axis] - 1) * spacing);
         }
     }
+    /// Number of points, saturating at 2^64 − 1.
     [[nodiscard]] std::uint64_t size() const {
-        return std::uint64_t{count.x} * count.y * count.z;
+        const std::uint64_t xy = std::uint64_t{count.x} * count.y;  // < 2^64: each count < 2^32
+        return count.z != 0 && xy > UINT64_MAX / count.z ? UINT64_MAX : xy * count.z;
     }
     /// Calls f(point) for every lattice point, x fastest.
     template <class F>

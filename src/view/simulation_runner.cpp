@@ -48,16 +48,19 @@ bool SimulationRunner::fetch(render::Snapshot& snapshot, RunnerStatus& status) {
 }
 
 void SimulationRunner::publish() {
-    render::takeSnapshot(source_->world(), back_);
+    // A diverged world holds non-finite values: keep showing the last good state, with the error.
+    const bool diverged = source_->world().divergence().has_value();
+    if (!diverged) render::takeSnapshot(source_->world(), back_);
     workerStatus_.playing = playing_;
     workerStatus_.speed = speed_;
     workerStatus_.emitters = emitters_;
+    std::lock_guard lock(mutex_);
+    status_ = workerStatus_;
+    if (diverged) return;
     // The three buffers rotate, so their own counters do not order them: number them here,
     // so the renderer uploads each new state once.
     back_.version = ++published_;
-    std::lock_guard lock(mutex_);
     std::swap(back_, middle_);
-    status_ = workerStatus_;
     fresh_ = true;
 }
 
@@ -66,7 +69,10 @@ void SimulationRunner::apply(const Command& c) {
         case Command::Kind::Play: playing_ = true; break;
         case Command::Kind::Pause: playing_ = false; break;
         case Command::Kind::Step: ++pendingSteps_; playing_ = false; break;
-        case Command::Kind::Reset: source_->reset(); break;
+        case Command::Kind::Reset:
+            source_->reset();
+            workerStatus_.error.clear();
+            break;
         case Command::Kind::Speed: speed_ = std::clamp(c.value, 0.01, 100.0); break;
         case Command::Kind::Emitters:
             emitters_ = c.flag;

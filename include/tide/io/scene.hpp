@@ -83,11 +83,17 @@ struct SceneEstimate {
     std::uint64_t bytes = 0;                      ///< peak memory, estimated
 };
 SceneEstimate estimate(const Scene& scene);
-/// Bytes of memory one particle costs (state, neighbour lists, grid), for estimates.
-inline constexpr std::uint64_t kBytesPerParticle = 320;
+/// Bytes of memory one particle costs (state, neighbour lists, grid, solver arrays), for
+/// estimates: peak RSS of `tide run` grew by ~920 B per particle from 12 000 to 50 653
+/// particles with dfsph (~650 with wcsph/pcisph; docs/robustness.md). It was 320, which let a
+/// scene three times too big for the machine through.
+inline constexpr std::uint64_t kBytesPerParticle = 1024;
 
 /// Memory this machine can still give, bytes (MemAvailable).
 std::uint64_t availableMemoryBytes();
+/// Empty when the scene (up to its end time) fits in availableMemoryBytes(); otherwise why
+/// not, with the estimate: "the scene needs about N particles and M MiB, more than ...".
+std::string memoryShortfall(const Scene& scene);
 
 /// Create the world a scene describes: materials, obstacles, wave makers, damping zones, blocks, emitters.
 World buildWorld(const Scene& scene);
