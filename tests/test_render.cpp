@@ -1,9 +1,6 @@
 // `tide render` as a user runs it, judged by pixel statistics against rules (never against a
 // stored image): frames of the asked size, water where the fluid is and sky elsewhere, each
 // material's colour in particle mode; bad flags refused; the scene's camera key checked.
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,26 +19,14 @@
 
 #include <tide/render/camera.hpp>
 
+#include "cli_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-    int exit;
-    std::string output;  ///< stdout and stderr together
-};
-
-Result run(const std::string& command) {
-    Result r{-1, {}};
-    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-    if (!pipe) return r;
-    std::array<char, 4096> buffer{};
-    std::size_t n;
-    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) r.output.append(buffer.data(), n);
-    const int status = pclose(pipe);
-    r.exit = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+using tide::testing::Result;
+using tide::testing::run;
 
 fs::path scratchRoot() { return fs::temp_directory_path() / ("tide_render_test_" + std::to_string(::getpid())); }
 
