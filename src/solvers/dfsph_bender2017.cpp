@@ -32,20 +32,21 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     const auto n = p.size();
     const auto nb = static_cast<std::uint32_t>(ctx.boundary.position.size());
     const kernels::CubicSpline w(ctx.supportRadius);
-    // Densities (Akinci et al. 2012, as sph::computeDensities) and the gradient factors from
-    // one square root per pair.
+    // Densities (Solenthaler & Pajarola 2008 with Akinci et al. 2012 walls, as
+    // sph::computeDensities) and the gradient factors from one square root per pair.
+    contrast_.prepare(p, ctx.materials, ctx.threads);
     fluidF_.resize(ctx.neighbors);
     wallF_.resize(ctx.boundaryNeighbors);
     const float self = w.value(0.0f);
     withPairVector(ctx.periodic, [&](auto delta) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
-            float rho = p.mass[i] * self;
+            float number = self;  // δ_i = Σ_j W_ij
             float* f = fluidF_.of(ctx.neighbors, i).data();
             for (const std::uint32_t j : ctx.neighbors.of(i)) {
                 const glm::vec3 d = delta(xi, p.position[j]);
                 const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-                rho += p.mass[j] * w.value(r);
+                number += w.value(r);
                 *f++ = PairKernels::gradientFactor(w, r);
             }
             float volume = 0.0f;
@@ -56,7 +57,7 @@ void DfsphBender2017::prepare(StepContext& ctx) {
                 volume += ctx.boundary.volume[b] * w.value(r);
                 *f++ = PairKernels::gradientFactor(w, r);
             }
-            p.density[i] = rho + ctx.materials[p.material[i]].restDensity * volume;
+            p.density[i] = p.mass[i] * number + ctx.materials[p.material[i]].restDensity * volume;  // ρ_i = m_i δ_i
         });
     });
     positionMass_.resize(n);
@@ -76,13 +77,17 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
     if (ctx.boundary.moving) wallVelocityRate_.resize(n);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
+        // Density contrast: ρ_i = m_i Σ_j W_ij, and j answers i's κ_i with Δv_j = Δt κ_i (m_i/m_j) (m_i/ρ_i) ∇W_ij,
+        // so the own term takes m_i Σ_j ∇W_ij and the neighbours' Σ_j (m_i³/m_j) |∇W_ij|²
+        // (with one mass: Σ_j m_j ∇W_ij and Σ_j |m_j ∇W_ij|², eq. 11).
+        const float mi = p.mass[i];
         glm::vec3 fluidGrad(0.0f), wallGrad(0.0f);
         float sumSquares = 0.0f;
         const float* f = fluidF_.of(ctx.neighbors, i).data();
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 g = (p.mass[j] * *f++) * ctx.delta(xi, p.position[j]);
+            const glm::vec3 g = (mi * *f++) * ctx.delta(xi, p.position[j]);
             fluidGrad += g;
-            sumSquares += glm::dot(g, g);
+            sumSquares += (mi / p.mass[j]) * glm::dot(g, g);
         }
         f = wallF_.of(ctx.boundaryNeighbors, i).data();
         float wallRate = 0.0f;
@@ -117,24 +122,25 @@ float DfsphBender2017::densityRate(const StepContext& ctx, PairVector delta, std
     for (std::size_t k = 0; k < neighbors.size(); ++k) {
         const std::uint32_t j = neighbors[k];
         const glm::vec4 xj = positionMass_[j];
-        rate += (xj.w * f[k]) * glm::dot(vi - p.velocity[j], delta(xi, glm::vec3(xj)));
+        rate += f[k] * glm::dot(vi - p.velocity[j], delta(xi, glm::vec3(xj)));
     }
     // Walls: Σ_b Ψ_b (v_i − v_b)·∇W_ib, the v_b part kept from computeAlpha.
     const float wall = ctx.boundary.moving ? glm::dot(vi, wallGradient_[i]) - wallVelocityRate_[i]
                                            : glm::dot(vi, wallGradient_[i]);
-    return rate + ctx.materials[p.material[i]].restDensity * wall;
+    return p.mass[i] * rate + ctx.materials[p.material[i]].restDensity * wall;  // m_i Σ_j v_ij·∇W_ij: Dρ_i/Dt of ρ_i = m_i δ_i
 }
 
 template <class PairVector>
 float DfsphBender2017::predictedDensity(const StepContext& ctx, PairVector delta, const kernels::CubicSpline& w,
                                         std::uint32_t i) const {
     const glm::vec3 xi(predicted_[i]);
-    float rho = predicted_[i].w * w.value(0.0f);
+    float number = w.value(0.0f);
     for (const std::uint32_t j : ctx.neighbors.of(i)) {
         const glm::vec4 xj = predicted_[j];
         const glm::vec3 r = delta(xi, glm::vec3(xj));
-        rho += xj.w * w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
+        number += w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
     }
+    const float rho = predicted_[i].w * number;  // m_i δ*_i
     float volume = 0.0f;
     for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
         const glm::vec4 xb = wallPositionVolume_[b];
@@ -147,9 +153,10 @@ float DfsphBender2017::predictedDensity(const StepContext& ctx, PairVector delta
 void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> boundaryK) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
-    // j's part of every pair term, m_j k_j/ρ_j, packed with x_j: one load per neighbour.
+    // j's part of every pair term, m_j² k_j/ρ_j (÷ m_i below: density contrast), packed with
+    // x_j: one load per neighbour.
     parallelFor(n, ctx.threads, [&](std::uint32_t j) {
-        positionK_[j] = glm::vec4(p.position[j], p.mass[j] * k_[j] / p.density[j]);
+        positionK_[j] = glm::vec4(p.position[j], p.mass[j] * (p.mass[j] * k_[j] / p.density[j]));
     });
     if (!boundaryK.empty())
         parallelFor(static_cast<std::uint32_t>(boundaryK.size()), ctx.threads, [&](std::uint32_t b) {
@@ -158,7 +165,7 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
     withPairVector(ctx.periodic, [&](auto delta) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
-            // Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij = (k_i/ρ_i) Σ_j m_j ∇W_ij + Σ_j (m_j k_j/ρ_j) ∇W_ij
+            // Σ_j (k_i m_i/ρ_i + k_j (m_j/m_i) m_j/ρ_j) ∇W_ij = (k_i/ρ_i) m_i Σ_j ∇W_ij + (1/m_i) Σ_j (m_j² k_j/ρ_j) ∇W_ij
             float x = 0.0f, y = 0.0f, z = 0.0f;
             const auto neighbors = ctx.neighbors.of(i);
             const float* f = fluidF_.of(ctx.neighbors, i).data();
@@ -170,7 +177,7 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
                 y += s * r.y;
                 z += s * r.z;
             }
-            const glm::vec3 dv = (k_[i] / p.density[i]) * fluidGradient_[i] + glm::vec3(x, y, z);
+            const glm::vec3 dv = (k_[i] / p.density[i]) * fluidGradient_[i] + (1.0f / p.mass[i]) * glm::vec3(x, y, z);
             // Σ_b Ψ_b (κ_i/ρ_i + κ_b/ρ_b) ∇W_ib with Ψ_b = ρ0 V_b, ρ_b = ρ_i; κ_b = κ_i when mirrored.
             const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
             glm::vec3 wall = k_[i] * wallGradient_[i];
@@ -179,10 +186,13 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
             } else {
                 const auto walls = ctx.boundaryNeighbors.of(i);
                 f = wallF_.of(ctx.boundaryNeighbors, i).data();
+                glm::vec3 pushed(0.0f);
                 for (std::size_t k = 0; k < walls.size(); ++k) {
                     const glm::vec4 xb = wallPositionK_[walls[k]];
-                    wall += (xb.w * f[k]) * delta(xi, glm::vec3(xb));
+                    pushed += (xb.w * f[k]) * delta(xi, glm::vec3(xb));
                 }
+                // k̃_b is p_b/ρ0_ref (density contrast): fluid i reads k_b = k̃_b ρ0_ref/ρ0_i.
+                wall += contrast_.uniform() ? pushed : pushed / contrast_.scale(i);
             }
             p.velocity[i] -= dv + psi * wall;
         });
@@ -241,7 +251,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
     boundaryK_.resize(nb);
     boundaryKappa_.assign(nb, 0.0f);
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
-                  ctx.supportRadius, ctx.threads);
+                  ctx.supportRadius, ctx.threads, contrast_.scale());
     // Moving walls are where they will be at the end of the step when the predicted densities are.
     if (ctx.boundary.moving)
         parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
@@ -249,7 +259,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
         });
     // Applies the change of κ (fluid, then walls from it) as a velocity change.
     auto push = [&] {
-        wall_.update(ctx.boundaryFluidNeighbors, kappa, ctx.threads);
+        wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa, scaledKappa_, ctx.threads), ctx.threads);
         const auto wallKappa = wall_.kappa();
         parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
             boundaryK_[b] = (wallKappa[b] - boundaryKappa_[b]) * dt;
