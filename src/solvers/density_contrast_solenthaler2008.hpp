@@ -23,7 +23,10 @@
 /// hand it κ̃_f = κ_f ρ0_f/ρ0_ref (≈ p_f/ρ0_ref) and read it back for fluid i as
 /// κ_b = κ̃_b ρ0_ref/ρ0_i; with one rest density both factors are exactly 1.
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -33,6 +36,25 @@
 #include "core/parallel.hpp"
 
 namespace tide {
+
+/// The convergence measure of a solve with several materials: the largest over materials of
+/// the mean of error[i]/ρ0_i over that material's particles, so that every material, not
+/// only their mix, ends within the tolerance (a light layer is a minority of the particles
+/// and the mean over all of them hid a heavy layer 23 % over it, measured at 5:1 in dfsph).
+/// Serial, so it does not depend on the thread count.
+template <class Context>
+[[nodiscard]] double worstMaterialMean(const Context& ctx, std::span<const float> error) {
+    const ParticleStore& p = ctx.particles;
+    std::vector<double> sum(ctx.materials.size(), 0.0), count(ctx.materials.size(), 0.0);
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+        sum[p.material[i]] += error[i] / ctx.materials[p.material[i]].restDensity;
+        count[p.material[i]] += 1.0;
+    }
+    double worst = 0.0;
+    for (std::size_t m = 0; m < sum.size(); ++m)
+        if (count[m] > 0.0) worst = std::max(worst, sum[m] / count[m]);
+    return worst;
+}
 
 /// Per-step factors of the density-contrast formulation.
 class DensityContrast {
@@ -58,6 +80,24 @@ public:
     [[nodiscard]] std::span<const float> scale() const { return scale_; }
     /// ρ0_i/ρ0_ref of particle i (1 when uniform()).
     [[nodiscard]] float scale(std::uint32_t i) const { return uniform_ ? 1.0f : scale_[i]; }
+
+    /// The time-step limit of a density contrast, s: dt ≤ ½ forceNumber √(s/a), a = |g| (ρ0_max/ρ0_min − 1)
+    /// the buoyant acceleration of the lightest fluid in the heaviest, which the pressure
+    /// solve imposes within a step and the CFL speed limit sees only afterwards (the force
+    /// criterion of Monaghan 1992, applied to it). Measured on a 25:1 column drop in dfsph
+    /// (spacing 1 cm): at the 5 ms maximum step it blew up on the 7th step, at 1.63 ms (the
+    /// criterion without the ½) after 0.08 s, at 1.5 ms it held for 0.5 s, at 0.8 ms (with
+    /// the ½) it converges in 4–6 iterations a step. Infinity for one rest density.
+    [[nodiscard]] static float timeStepLimit(std::span<const MaterialDef> materials, float gravity, float spacing,
+                                             float forceNumber) {
+        float lo = std::numeric_limits<float>::infinity(), hi = 0.0f;
+        for (const MaterialDef& m : materials) {
+            lo = std::min(lo, m.restDensity);
+            hi = std::max(hi, m.restDensity);
+        }
+        const float a = gravity * (hi / lo - 1.0f);
+        return a > 0.0f ? 0.5f * forceNumber * std::sqrt(spacing / a) : std::numeric_limits<float>::infinity();
+    }
 
     /// κ̃_f = κ_f ρ0_f/ρ0_ref for the wall pressure: `kappa` itself when uniform(), else `scratch` filled.
     [[nodiscard]] std::span<const float> wallKappa(std::span<const float> kappa, std::vector<float>& scratch,

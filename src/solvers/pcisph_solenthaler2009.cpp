@@ -98,6 +98,7 @@ void PcisphSolenthaler2009::predictCompression(StepContext& ctx) {
 
 double PcisphSolenthaler2009::meanRelativeCompression(const StepContext& ctx) const {
     const ParticleStore& p = ctx.particles;
+    if (!contrast_.uniform()) return worstMaterialMean(ctx, error_);
     double sum = 0.0;
     for (std::uint32_t i = 0; i < p.size(); ++i) sum += error_[i] / ctx.materials[p.material[i]].restDensity;
     return sum / std::max<double>(1.0, p.size());
@@ -182,6 +183,9 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
     SolverDef limits = ctx.solver;
     if (nu > 0.0f)
         limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, 0.125f * ctx.particleSpacing * ctx.particleSpacing / nu));
+    if (!contrast_.uniform())
+        limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, DensityContrast::timeStepLimit(
+                                    ctx.materials, glm::length(ctx.gravity), ctx.particleSpacing, ctx.solver.forceNumber)));
     const float speed = sph::maxSpeed(ctx);
 
     // A failed solve (no convergence in maxIterations, or corrections that feed the
