@@ -26,7 +26,7 @@ struct MaterialDef {
 };
 
 /// How two materials (or a material with itself, a == b) meet: World::setMaterialPair.
-/// Pairs never set are immiscible and without tension. Fluids of different rest density
+/// Pairs never set are immiscible. Fluids of different rest density
 /// always keep their own density and do not mix (density-contrast SPH, Solenthaler &
 /// Pajarola 2008); what a miscible pair exchanges is dye (ParticleStore::concentration).
 struct MaterialPairDef {
@@ -41,10 +41,6 @@ struct MaterialPairDef {
     /// Physical dyes in water are ~1e-9; visible mixing over seconds at centimetre spacings
     /// needs ~1e-4. The explicit update limits dt to 0.125 s²/D (s the particle spacing).
     float diffusivity = 0.0f;
-    /// Surface tension coefficient γ of Akinci et al. 2013 (cohesion + curvature), 0 = off.
-    /// a == b: the material's own surface tension (against air and other materials);
-    /// a ≠ b: cohesion between the two, which lowers their interface tension.
-    float surfaceTension = 0.0f;
 };
 
 /// Pressure from density.

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The per-pair properties of a World's materials (MaterialPairDef) as dense tables, rebuilt
-/// when materials or pairs change, read by the solvers through StepContext::pairs.
+/// when materials or pairs change, read through StepContext::pairs (dye diffusivity; the time-step limit).
 
 #include <algorithm>
 #include <span>
@@ -17,11 +17,9 @@ public:
     void build(std::size_t materialCount, std::span<const MaterialPairDef> pairs) {
         count_ = materialCount;
         diffusivity_.assign(count_ * count_, 0.0f);
-        tension_.assign(count_ * count_, 0.0f);
         std::vector<bool> ownSet(count_, false);
         for (const MaterialPairDef& pair : pairs) {
             if (pair.a >= count_ || pair.b >= count_) continue;
-            tension_[pair.a * count_ + pair.b] = tension_[pair.b * count_ + pair.a] = pair.surfaceTension;
             if (pair.a == pair.b) {
                 diffusivity_[pair.a * count_ + pair.a] = pair.diffusivity;
                 ownSet[pair.a] = true;
@@ -38,25 +36,18 @@ public:
             diffusivity_[a * count_ + a] = own;
         }
         maxDiffusivity_ = 0.0f;
-        anyTension_ = false;
         for (const float d : diffusivity_) maxDiffusivity_ = std::max(maxDiffusivity_, d);
-        for (const float t : tension_) anyTension_ = anyTension_ || t > 0.0f;
     }
 
     /// D of the dye between materials a and b, m²/s (0: no exchange).
     [[nodiscard]] float diffusivity(MaterialIndex a, MaterialIndex b) const { return diffusivity_[a * count_ + b]; }
-    /// γ of the Akinci et al. 2013 surface tension between a and b (0: none).
-    [[nodiscard]] float surfaceTension(MaterialIndex a, MaterialIndex b) const { return tension_[a * count_ + b]; }
     [[nodiscard]] float maxDiffusivity() const { return maxDiffusivity_; }
     [[nodiscard]] bool anyDiffusion() const { return maxDiffusivity_ > 0.0f; }
-    [[nodiscard]] bool anyTension() const { return anyTension_; }
 
 private:
     std::size_t count_ = 0;
     std::vector<float> diffusivity_;
-    std::vector<float> tension_;
     float maxDiffusivity_ = 0.0f;
-    bool anyTension_ = false;
 };
 
 }  // namespace tide

@@ -288,8 +288,6 @@ void World::setMaterialPair(const MaterialPairDef& pair) {
     if (pair.a == pair.b && pair.miscible)
         throw std::invalid_argument("materialPair.miscible: a material is always miscible with itself (\"" +
                                     w.materials[pair.a].name + "\")");
-    if (!(pair.surfaceTension >= 0.0f) || !std::isfinite(pair.surfaceTension))
-        throw std::invalid_argument("materialPair.surfaceTension: must be >= 0, got " + show(pair.surfaceTension));
     for (MaterialPairDef& existing : w.pairs)
         if ((existing.a == pair.a && existing.b == pair.b) || (existing.a == pair.b && existing.b == pair.a)) {
             existing = pair;

@@ -262,11 +262,11 @@ void readMaterials(Reader& r, const json& list, Scene& scene) {
     }
 }
 
-/// "material_pairs": [{"materials": [name, name], "miscible", "diffusivity", "surface_tension"}].
+/// "material_pairs": [{"materials": [name, name], "miscible", "diffusivity"}].
 void readMaterialPairs(Reader& r, const json& list, Scene& scene) {
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string path = indexed("material_pairs", i);
-        if (!r.object(list[i], path, {"materials", "miscible", "diffusivity", "surface_tension"})) continue;
+        if (!r.object(list[i], path, {"materials", "miscible", "diffusivity"})) continue;
         MaterialPairDef pair;
         bool ok = true;
         if (!list[i].contains("materials") || !list[i]["materials"].is_array() || list[i]["materials"].size() != 2 ||
@@ -292,7 +292,6 @@ void readMaterialPairs(Reader& r, const json& list, Scene& scene) {
         }
         if (auto v = r.boolean(list[i], "miscible", path)) pair.miscible = *v;
         if (auto v = r.number(list[i], "diffusivity", path, false, 0.0, 1e3)) pair.diffusivity = static_cast<float>(*v);
-        if (auto v = r.number(list[i], "surface_tension", path, false, 0.0, 1e6)) pair.surfaceTension = static_cast<float>(*v);
         if (!ok) continue;
         if (pair.a == pair.b && pair.miscible)
             r.fail(join(path, "miscible"), "a material is always miscible with itself");
