@@ -156,8 +156,12 @@ TEST(Multifluid, PcisphLayersThreeMaterials) { expectLayered(dropColumns("pcisph
 TEST(Multifluid, WcsphLayersDensityRatio5) { expectLayered(dropColumns("wcsph", {1000, 200}, 2.0f), 0.01); }
 TEST(Multifluid, WcsphLayersDensityRatio25) { expectLayered(dropColumns("wcsph", {5000, 200}, 2.0f), 0.01); }
 
-/// Heavy under light at rest, settled 1 s: the distance from each particle next to the
-/// interface to its nearest particle of the other fluid, over the bulk nearest-neighbour distance.
+/// Heavy under light at rest, settled 1 s. Spacing across the interface: from each heavy
+/// particle whose nearest particle above it is light, the distance to that particle (and
+/// from each light one whose nearest below is heavy, downwards); bulk spacing: the same
+/// nearest-above (below) distance for particles of a layer at least 3 spacings from the
+/// interface, whose nearest is of their own material. The same one-sided measure on both
+/// sides, so a disordered lattice biases neither. Returns across / bulk.
 double interfaceGapRatio(const std::string& solver, float heavy, float light) {
     World world = thinBox(0.2f, 0.3f, solver);
     const MaterialIndex h = addFluid(world, "heavy", heavy);
@@ -172,17 +176,25 @@ double interfaceGapRatio(const std::string& solver, float heavy, float light) {
     for (std::uint32_t i = 0; i < p.size(); ++i) {
         const glm::vec3 xi = p.position[i];
         if (xi.x < 0.03f || xi.x > 0.17f) continue;  // away from the side walls
-        float same = std::numeric_limits<float>::max(), other = same;
+        const bool isHeavy = p.material[i] == h;
+        const float side = isHeavy ? 1.0f : -1.0f;  // heavy looks up, light looks down
+        float nearest = std::numeric_limits<float>::max();
+        MaterialIndex of = p.material[i];
         for (std::uint32_t j = 0; j < p.size(); ++j) {
-            if (j == i) continue;
+            if (side * (p.position[j].y - xi.y) <= 0.0f) continue;
             const float d = glm::length(xi - p.position[j]);
-            (p.material[j] == p.material[i] ? same : other) = std::min(p.material[j] == p.material[i] ? same : other, d);
+            if (d < nearest) {
+                nearest = d;
+                of = p.material[j];
+            }
         }
-        if (other < 1.5f * kSpacing) {  // next to the interface
-            across += other;
+        if (nearest > 2.0f * kSpacing) continue;  // the free surface
+        const bool deep = isHeavy ? xi.y > 0.03f && xi.y < 0.07f : xi.y > 0.13f && xi.y < 0.17f;
+        if (of != p.material[i]) {
+            across += nearest;
             ++nAcross;
-        } else if (std::abs(xi.y - 0.1f) > 0.03f && xi.y < 0.17f && xi.y > 0.03f) {
-            bulk += same;
+        } else if (deep) {
+            bulk += nearest;
             ++nBulk;
         }
     }
@@ -190,6 +202,7 @@ double interfaceGapRatio(const std::string& solver, float heavy, float light) {
     std::printf("%s interface %.0f/%.0f: spacing across %.5f m (%d particles), bulk %.5f m (%d), ratio %.3f\n",
                 solver.c_str(), heavy, light, across / nAcross, nAcross, bulk / nBulk, nBulk, ratio);
     EXPECT_GT(nAcross, 20);
+    EXPECT_GT(nBulk, 20);
     return ratio;
 }
 
@@ -201,11 +214,15 @@ TEST(Multifluid, NoGapAtAFlatInterface) {
         }
 }
 
+// Rayleigh–Taylor and the discs run wcsph: dfsph and pcisph with a density contrast diverge
+// when heavy fluid lies over light in this thin box (the density solve's error grows from
+// the second step and the 2:1 box blows up at 0.02 s, measured) — an open problem.
+
 /// Heavy over light in a box 0.2 m wide and 0.4 m tall, the interface at mid-height with a
 /// one-spacing step seeding the longest mode. Returns the fraction of the upper fluid's
 /// particles below the lower quarter line after `duration`, and prints when they first got there.
 double rayleighTaylor(float upper, float lower, double duration) {
-    World world = thinBox(0.2f, 0.4f, "dfsph");
+    World world = thinBox(0.2f, 0.4f, "wcsph");
     const MaterialIndex top = addFluid(world, "upper", upper);
     const MaterialIndex bottom = addFluid(world, "lower", lower);
     addBox(world, 0.0f, 0.0f, 0.1f, 0.21f, bottom);
@@ -241,7 +258,7 @@ TEST(Multifluid, RayleighTaylorEqualDensitiesStayPut) {
 /// of a 0.3 m water column, built from one-row blocks on the water's lattice. Returns the
 /// disc's median height after `duration`.
 float releaseDisc(float density, double duration) {
-    World world = thinBox(0.2f, 0.4f, "dfsph");
+    World world = thinBox(0.2f, 0.4f, "wcsph");
     const MaterialIndex water = addFluid(world, "water", 1000.0f);
     const MaterialIndex disc = addFluid(world, "disc", density);
     const float cx = 0.1f, cy = 0.15f, radius = 0.03f, depth = 0.3f;

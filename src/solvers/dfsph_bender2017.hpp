@@ -87,8 +87,8 @@ private:
     std::vector<glm::vec3> accel_;
     XsphFilter xsph_;
     std::vector<glm::vec3> savedVelocity_;  ///< before a step that may be retaken (density contrast)
-    double dtCap_ = 1e30;              ///< s; halved when a density solve fails (density contrast)
-    bool densityConverged_ = false;    ///< whether the last density solve met the tolerance
+    double dtCap_ = 1e30;              ///< s; halved when a density solve diverges (density contrast)
+    bool densityDiverged_ = false;     ///< whether the last density solve diverged (density contrast)
     double lastDt_ = 1e-3;             ///< s; the divergence solve runs before this step's dt is known
 };
 
