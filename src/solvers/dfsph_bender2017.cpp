@@ -35,18 +35,26 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     // Densities (Solenthaler & Pajarola 2008 with Akinci et al. 2012 walls, as
     // sph::computeDensities) and the gradient factors from one square root per pair.
     contrast_.prepare(p, ctx.materials, ctx.threads);
+    // (x_j, m_j) for one rest density, (x_j, 1) with a density contrast, where i's own mass
+    // multiplies the sums instead: the one-material sums stay bit for bit what they were.
+    const bool uniform = contrast_.uniform();
+    positionMass_.resize(n);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        positionMass_[i] = glm::vec4(p.position[i], uniform ? p.mass[i] : 1.0f);
+    });
     fluidF_.resize(ctx.neighbors);
     wallF_.resize(ctx.boundaryNeighbors);
     const float self = w.value(0.0f);
     withPairVector(ctx.periodic, [&](auto delta) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
-            float number = self;  // δ_i = Σ_j W_ij
+            float rho = positionMass_[i].w * self;  // m_i δ_i: Σ_j m_j W_ij, or δ_i = Σ_j W_ij times m_i below
             float* f = fluidF_.of(ctx.neighbors, i).data();
             for (const std::uint32_t j : ctx.neighbors.of(i)) {
-                const glm::vec3 d = delta(xi, p.position[j]);
+                const glm::vec4 xj = positionMass_[j];
+                const glm::vec3 d = delta(xi, glm::vec3(xj));
                 const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-                number += w.value(r);
+                rho += xj.w * w.value(r);
                 *f++ = PairKernels::gradientFactor(w, r);
             }
             float volume = 0.0f;
@@ -57,11 +65,10 @@ void DfsphBender2017::prepare(StepContext& ctx) {
                 volume += ctx.boundary.volume[b] * w.value(r);
                 *f++ = PairKernels::gradientFactor(w, r);
             }
-            p.density[i] = p.mass[i] * number + ctx.materials[p.material[i]].restDensity * volume;  // ρ_i = m_i δ_i
+            if (!uniform) rho *= p.mass[i];  // ρ_i = m_i δ_i
+            p.density[i] = rho + ctx.materials[p.material[i]].restDensity * volume;
         });
     });
-    positionMass_.resize(n);
-    parallelFor(n, ctx.threads, [&](std::uint32_t i) { positionMass_[i] = glm::vec4(p.position[i], p.mass[i]); });
     wallPositionVolume_.resize(nb);
     parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
         wallPositionVolume_[b] = glm::vec4(ctx.boundary.position[b], ctx.boundary.volume[b]);
@@ -126,25 +133,26 @@ float DfsphBender2017::densityRate(const StepContext& ctx, PairVector delta, std
     for (std::size_t k = 0; k < neighbors.size(); ++k) {
         const std::uint32_t j = neighbors[k];
         const glm::vec4 xj = positionMass_[j];
-        rate += f[k] * glm::dot(vi - p.velocity[j], delta(xi, glm::vec3(xj)));
+        rate += (xj.w * f[k]) * glm::dot(vi - p.velocity[j], delta(xi, glm::vec3(xj)));
     }
+    if (!contrast_.uniform()) rate *= p.mass[i];  // m_i Σ_j v_ij·∇W_ij: Dρ_i/Dt of ρ_i = m_i δ_i
     // Walls: Σ_b Ψ_b (v_i − v_b)·∇W_ib, the v_b part kept from computeAlpha.
     const float wall = ctx.boundary.moving ? glm::dot(vi, wallGradient_[i]) - wallVelocityRate_[i]
                                            : glm::dot(vi, wallGradient_[i]);
-    return p.mass[i] * rate + ctx.materials[p.material[i]].restDensity * wall;  // m_i Σ_j v_ij·∇W_ij: Dρ_i/Dt of ρ_i = m_i δ_i
+    return rate + ctx.materials[p.material[i]].restDensity * wall;
 }
 
 template <class PairVector>
 float DfsphBender2017::predictedDensity(const StepContext& ctx, PairVector delta, const kernels::CubicSpline& w,
                                         std::uint32_t i) const {
     const glm::vec3 xi(predicted_[i]);
-    float number = w.value(0.0f);
+    float rho = predicted_[i].w * w.value(0.0f);
     for (const std::uint32_t j : ctx.neighbors.of(i)) {
         const glm::vec4 xj = predicted_[j];
         const glm::vec3 r = delta(xi, glm::vec3(xj));
-        number += w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
+        rho += xj.w * w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
     }
-    const float rho = predicted_[i].w * number;  // m_i δ*_i
+    if (!contrast_.uniform()) rho *= ctx.particles.mass[i];  // m_i δ*_i
     float volume = 0.0f;
     for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
         const glm::vec4 xb = wallPositionVolume_[b];
@@ -159,8 +167,10 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
     const auto n = p.size();
     // j's part of every pair term, m_j² k_j/ρ_j (÷ m_i below: density contrast), packed with
     // x_j: one load per neighbour.
+    const bool uniform = contrast_.uniform();
     parallelFor(n, ctx.threads, [&](std::uint32_t j) {
-        positionK_[j] = glm::vec4(p.position[j], p.mass[j] * (p.mass[j] * k_[j] / p.density[j]));
+        const float part = p.mass[j] * k_[j] / p.density[j];
+        positionK_[j] = glm::vec4(p.position[j], uniform ? part : p.mass[j] * part);
     });
     if (!boundaryK.empty())
         parallelFor(static_cast<std::uint32_t>(boundaryK.size()), ctx.threads, [&](std::uint32_t b) {
@@ -181,7 +191,8 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
                 y += s * r.y;
                 z += s * r.z;
             }
-            const glm::vec3 dv = (k_[i] / p.density[i]) * fluidGradient_[i] + (1.0f / p.mass[i]) * glm::vec3(x, y, z);
+            const glm::vec3 sum = uniform ? glm::vec3(x, y, z) : (1.0f / p.mass[i]) * glm::vec3(x, y, z);
+            const glm::vec3 dv = (k_[i] / p.density[i]) * fluidGradient_[i] + sum;
             // Σ_b Ψ_b (κ_i/ρ_i + κ_b/ρ_b) ∇W_ib with Ψ_b = ρ0 V_b, ρ_b = ρ_i; κ_b = κ_i when mirrored.
             const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
             glm::vec3 wall = k_[i] * wallGradient_[i];
@@ -190,13 +201,13 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
             } else {
                 const auto walls = ctx.boundaryNeighbors.of(i);
                 f = wallF_.of(ctx.boundaryNeighbors, i).data();
-                glm::vec3 pushed(0.0f);
+                glm::vec3 pushed = uniform ? wall : glm::vec3(0.0f);
                 for (std::size_t k = 0; k < walls.size(); ++k) {
                     const glm::vec4 xb = wallPositionK_[walls[k]];
                     pushed += (xb.w * f[k]) * delta(xi, glm::vec3(xb));
                 }
                 // k̃_b is p_b/ρ0_ref (density contrast): fluid i reads k_b = k̃_b ρ0_ref/ρ0_i.
-                wall += contrast_.uniform() ? pushed : pushed / contrast_.scale(i);
+                wall = uniform ? pushed : wall + pushed / contrast_.scale(i);
             }
             p.velocity[i] -= dv + psi * wall;
         });
@@ -291,7 +302,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
     double initialError = 0.0;
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            predicted_[i] = glm::vec4(p.position[i] + dt * p.velocity[i], p.mass[i]);
+            predicted_[i] = glm::vec4(p.position[i] + dt * p.velocity[i], positionMass_[i].w);
         });
         withPairVector(ctx.periodic, [&](auto delta) {
             parallelFor(n, ctx.threads, [&](std::uint32_t i) {

@@ -79,7 +79,7 @@ private:
     std::vector<glm::vec3> fluidGradient_;   ///< Σ_j m_j ∇W_ij
     std::vector<glm::vec3> wallGradient_;    ///< Σ_b V_b ∇W_ib
     std::vector<float> wallVelocityRate_;    ///< Σ_b V_b v_b·∇W_ib (moving walls only)
-    std::vector<glm::vec4> positionMass_;    ///< (x_j, m_j)
+    std::vector<glm::vec4> positionMass_;    ///< (x_j, m_j); (x_j, 1) with a density contrast
     std::vector<glm::vec4> positionK_;       ///< (x_j, m_j k_j/ρ_j) of one iteration
     std::vector<glm::vec4> predicted_;       ///< (x_j + Δt v_j, m_j) of one iteration
     std::vector<glm::vec4> wallPositionVolume_;  ///< (x_b, V_b)
