@@ -365,7 +365,7 @@ TEST_F(Exporters, VtuLoadsInVtksXmlReader) {
           "assert (p == np.array([" << points.str() << "], dtype=np.float64).astype(np.float32).reshape(5, 3)).all(), p\n"
           "pd = g.GetPointData()\n"
           "assert sorted(pd.GetArrayName(i) for i in range(pd.GetNumberOfArrays())) == "
-          "['density', 'id', 'material', 'pressure', 'velocity']\n"
+          "['concentration', 'density', 'id', 'material', 'pressure', 'velocity']\n"
           "assert vtk_to_numpy(pd.GetArray('id')).tolist() == [" << ids.str() << "]\n"
           "assert vtk_to_numpy(pd.GetArray('material')).tolist() == [" << materials.str() << "]\n"
           "assert pd.GetArray('velocity').GetNumberOfComponents() == 3\n";
