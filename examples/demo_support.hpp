@@ -72,9 +72,10 @@ inline Options parse(int argc, char** argv) {
     return o;
 }
 
-inline tide::FluidSettings settings(const Options& o) {
+inline tide::FluidSettings settings(const Options& o, const char* method = "classic") {
     tide::FluidSettings s;
     s.threads = o.threads;
+    s.solver.method = method;
     return s;
 }
 
@@ -130,9 +131,11 @@ inline int run(const Options& o, const std::function<void(tide::Fluid&)>& setup,
 }
 
 /// The seed's container: a box 40 units wide, centred on 0 (1 m at the default scale).
-inline void initSeedTank(tide::Fluid& fluid, const Options& o) {
+/// Several fluids of different density need a solver with density-contrast SPH (dfsph,
+/// pcisph, wcsph; the seed's classic smears density across their interfaces).
+inline void initSeedTank(tide::Fluid& fluid, const Options& o, const char* method = "classic") {
     fluid.init(65535, glm::vec3(-20, -20, -20), glm::vec3(20, 20, 20), glm::vec3(0), glm::vec3(0),
-               glm::vec3(0, -9.81f, 0), settings(o));
+               glm::vec3(0, -9.81f, 0), settings(o, method));
 }
 
 }  // namespace demo

@@ -41,6 +41,7 @@ ParticleStore makeParticles() {
                  0.001f, static_cast<MaterialIndex>(i % 3 == 2 ? 65535 : i % 3), 1000.0f);
         p.density[i] = 998.2f + 1.37f * f;
         p.pressure[i] = -12.5f + 1234.5678f * f;
+        p.concentration[i] = 0.0625f + 0.2f * f;
     }
     p.permute(std::vector<std::uint32_t>{4, 3, 2, 1, 0});
     return p;
@@ -170,22 +171,24 @@ TEST_F(Exporters, PlyHeaderIsExactAndPayloadDecodesToTheSameValues) {
         "property float vz\n"
         "property float density\n"
         "property float pressure\n"
+        "property float concentration\n"
         "property ushort material\n"
         "property uint id\n"
         "end_header\n";
     ASSERT_GE(bytes.size(), expectedHeader.size());
     EXPECT_EQ(bytes.substr(0, expectedHeader.size()), expectedHeader);
 
-    constexpr std::size_t kVertexBytes = 8 * 4 + 2 + 4;
+    constexpr std::size_t kVertexBytes = 9 * 4 + 2 + 4;
     ASSERT_EQ(bytes.size(), expectedHeader.size() + kCount * kVertexBytes);
     for (std::uint32_t i = 0; i < kCount; ++i) {
         const std::size_t at = expectedHeader.size() + i * kVertexBytes;
         const glm::vec3& x = particles_.position[i];
         const glm::vec3& v = particles_.velocity[i];
-        const float expected[8] = {x.x, x.y, x.z, v.x, v.y, v.z, particles_.density[i], particles_.pressure[i]};
-        for (std::size_t k = 0; k < 8; ++k) EXPECT_EQ(readLE<float>(bytes, at + 4 * k), expected[k]) << i << ' ' << k;
-        EXPECT_EQ(readLE<std::uint16_t>(bytes, at + 32), particles_.material[i]);
-        EXPECT_EQ(readLE<std::uint32_t>(bytes, at + 34), particles_.id[i]);
+        const float expected[9] = {x.x, x.y, x.z, v.x, v.y, v.z, particles_.density[i], particles_.pressure[i],
+                                   particles_.concentration[i]};
+        for (std::size_t k = 0; k < 9; ++k) EXPECT_EQ(readLE<float>(bytes, at + 4 * k), expected[k]) << i << ' ' << k;
+        EXPECT_EQ(readLE<std::uint16_t>(bytes, at + 36), particles_.material[i]);
+        EXPECT_EQ(readLE<std::uint32_t>(bytes, at + 38), particles_.id[i]);
     }
     EXPECT_EQ(particles_.id[0], 4u) << "the fixture reorders particles so ids differ from indices";
 }
@@ -223,6 +226,7 @@ TEST_F(Exporters, VtuHeaderAndRawAppendedBlockAreConsistent) {
     const std::map<std::string, std::pair<std::string, int>> expected = {
         {"Points", {"Float32", 3}},     {"velocity", {"Float32", 3}},   {"density", {"Float32", 1}},
         {"pressure", {"Float32", 1}},   {"material", {"Int32", 1}},     {"id", {"UInt32", 1}},
+        {"concentration", {"Float32", 1}},
         {"connectivity", {"Int64", 1}}, {"offsets", {"Int64", 1}},      {"types", {"UInt8", 1}},
     };
     ASSERT_EQ(arrays.size(), expected.size()) << xml;
@@ -235,7 +239,7 @@ TEST_F(Exporters, VtuHeaderAndRawAppendedBlockAreConsistent) {
     // PointData holds exactly the per-particle fields; Points and Cells sit in their sections.
     const std::size_t pointData = xml.find("<PointData"), pointDataEnd = xml.find("</PointData>");
     ASSERT_NE(pointData, std::string::npos);
-    for (const char* name : {"velocity", "density", "pressure", "material", "id"}) {
+    for (const char* name : {"velocity", "density", "pressure", "concentration", "material", "id"}) {
         const std::size_t at = xml.find(std::string("Name=\"").append(name).append("\""));
         EXPECT_TRUE(at > pointData && at < pointDataEnd) << name;
     }
@@ -266,6 +270,7 @@ TEST_F(Exporters, VtuHeaderAndRawAppendedBlockAreConsistent) {
         }
         EXPECT_EQ(readLE<float>(bytes, data("density") + 4 * i), particles_.density[i]);
         EXPECT_EQ(readLE<float>(bytes, data("pressure") + 4 * i), particles_.pressure[i]);
+        EXPECT_EQ(readLE<float>(bytes, data("concentration") + 4 * i), particles_.concentration[i]);
         EXPECT_EQ(readLE<std::int32_t>(bytes, data("material") + 4 * i), particles_.material[i]);
         EXPECT_EQ(readLE<std::uint32_t>(bytes, data("id") + 4 * i), particles_.id[i]);
         EXPECT_EQ(readLE<std::int64_t>(bytes, data("connectivity") + 8 * i), static_cast<std::int64_t>(i));
@@ -303,7 +308,7 @@ TEST_F(Exporters, VtuLoadsInMeshio) {
           "assert m.points.shape == (5, 3), m.points.shape\n"
           "assert (m.points.astype(np.float32) == f([" << list[0].str() << "]).reshape(5, 3)).all(), m.points\n"
           "pd = m.point_data\n"
-          "assert set(pd.keys()) == {'velocity', 'density', 'pressure', 'material', 'id'}, pd.keys()\n"
+          "assert set(pd.keys()) == {'velocity', 'density', 'pressure', 'concentration', 'material', 'id'}, pd.keys()\n"
           "assert (pd['velocity'] == f([" << list[1].str() << "]).reshape(5, 3)).all(), pd['velocity']\n"
           "assert (pd['density'] == f([" << list[2].str() << "])).all(), pd['density']\n"
           "assert (pd['pressure'] == f([" << list[3].str() << "])).all(), pd['pressure']\n"
@@ -360,7 +365,7 @@ TEST_F(Exporters, VtuLoadsInVtksXmlReader) {
           "assert (p == np.array([" << points.str() << "], dtype=np.float64).astype(np.float32).reshape(5, 3)).all(), p\n"
           "pd = g.GetPointData()\n"
           "assert sorted(pd.GetArrayName(i) for i in range(pd.GetNumberOfArrays())) == "
-          "['density', 'id', 'material', 'pressure', 'velocity']\n"
+          "['concentration', 'density', 'id', 'material', 'pressure', 'velocity']\n"
           "assert vtk_to_numpy(pd.GetArray('id')).tolist() == [" << ids.str() << "]\n"
           "assert vtk_to_numpy(pd.GetArray('material')).tolist() == [" << materials.str() << "]\n"
           "assert pd.GetArray('velocity').GetNumberOfComponents() == 3\n";

@@ -25,6 +25,24 @@ struct MaterialDef {
     glm::vec3 color{0.2f, 0.45f, 0.9f};     ///< linear RGB in [0, 1], for renderers
 };
 
+/// How two materials (or a material with itself, a == b) meet: World::setMaterialPair.
+/// Pairs never set are immiscible. Fluids of different rest density
+/// always keep their own density and do not mix (density-contrast SPH, Solenthaler &
+/// Pajarola 2008); what a miscible pair exchanges is dye (ParticleStore::concentration).
+struct MaterialPairDef {
+    MaterialIndex a = 0;
+    MaterialIndex b = 0;
+    /// a ≠ b: dye diffuses across their interface at `diffusivity`. (A material is always
+    /// miscible with itself.)
+    bool miscible = false;
+    /// Fickian diffusivity D of the dye concentration, m²/s (SPH form of Cleary & Monaghan
+    /// 1999). For a ≠ b it needs `miscible`. A material's own D (pair a == a) defaults to the
+    /// largest D of its miscible pairs, so dye that crosses an interface keeps spreading.
+    /// Physical dyes in water are ~1e-9; visible mixing over seconds at centimetre spacings
+    /// needs ~1e-4. The explicit update limits dt to 0.125 s²/D (s the particle spacing).
+    float diffusivity = 0.0f;
+};
+
 /// Pressure from density.
 enum class EquationOfState {
     Linear,  ///< p = κ (ρ − ρ0), κ = c² (Müller et al. 2003)
@@ -109,6 +127,7 @@ struct BlockDef {
     glm::vec3 max{0.0f};
     glm::vec3 velocity{0.0f};
     MaterialIndex material = 0;
+    float concentration = 0.0f;  ///< initial dye concentration of its particles, ≥ 0
 };
 
 /// A continuous source: a flat outlet that emits one layer of particles each time the
@@ -120,6 +139,7 @@ struct EmitterDef {
     MaterialIndex material = 0;
     double start = 0.0;                     ///< s
     double end = std::numeric_limits<double>::infinity();  ///< s
+    float concentration = 0.0f;             ///< dye concentration of the emitted particles, ≥ 0
 };
 
 

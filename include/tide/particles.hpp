@@ -29,6 +29,9 @@ public:
     std::vector<float> warmKappa;         ///< κ = p/ρ the last density solve ended with, m²/s²
     std::vector<float> warmDivergence;    ///< κᵛΔt the last divergence solve ended with, m²/s
     std::vector<MaterialIndex> material;
+    /// Dye concentration, a passive scalar (0 = clear) carried by each particle and spread
+    /// between miscible materials (MaterialPairDef); mass-weighted Σ m c is conserved.
+    std::vector<float> concentration;
     std::vector<std::uint32_t> id;        ///< stable identity, unchanged by reordering
 
     /// Number of particles.
@@ -37,8 +40,8 @@ public:
 
     /// Reserve room for n particles in every array.
     void reserve(std::uint32_t n);
-    /// Append one particle at rest pressure; its id is the next free id.
-    void append(const glm::vec3& x, const glm::vec3& v, float m, MaterialIndex mat, float rho0);
+    /// Append one particle at rest pressure with dye concentration `c`; its id is the next free id.
+    void append(const glm::vec3& x, const glm::vec3& v, float m, MaterialIndex mat, float rho0, float c = 0.0f);
     /// Reorder every array so that new[k] = old[order[k]]; order is a permutation of [0, size()).
     void permute(std::span<const std::uint32_t> order);
     /// Drop every particle.

@@ -146,6 +146,15 @@ public:
     [[nodiscard]] const std::vector<MaterialDef>& materials() const;
     /// Mass of one particle of a material, kg (ρ0 times the volume a lattice particle fills).
     [[nodiscard]] float particleMass(MaterialIndex material) const;
+    /// Set how two added materials meet (miscibility, dye diffusivity; see
+    /// MaterialPairDef), replacing an earlier setting of the same pair in either order.
+    /// Throws std::invalid_argument naming the field at fault.
+    void setMaterialPair(const MaterialPairDef& pair);
+    /// The pairs set, in the order set (a replaced pair keeps its place).
+    [[nodiscard]] const std::vector<MaterialPairDef>& materialPairs() const;
+    /// Σ m_i c_i / Σ m_i: the mass-weighted mean dye concentration (0 without particles),
+    /// which diffusion conserves.
+    [[nodiscard]] double meanConcentration() const;
 
     /// Fill a box with particles on a lattice of the world's spacing, centred in the box,
     /// leaving out points inside obstacles. Adds all of them or none (see AddStatus).

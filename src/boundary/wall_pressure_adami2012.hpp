@@ -10,6 +10,9 @@
 /// carries its weight, so particles slide down walls and stir the whole tank; with the
 /// hydrostatic term the wall carries its share and a tank at rest stays at rest.
 /// Walls never pull: κ_b ≥ 0.
+/// Several rest densities (solvers/density_contrast_solenthaler2008.hpp): the sums run over
+/// κ̃_f = κ_f ρ0_f/ρ0_ref, the gravity term weighs each fluid particle by ρ0_f/ρ0_ref, so κ_b
+/// is p_b/ρ0_ref, the pressure of the layered fluid at the wall.
 
 #include <span>
 #include <vector>
@@ -29,7 +32,8 @@ public:
     /// Kernel sums of each boundary particle over the fluid near it, at the current positions
     /// (the kernel values are kept: the solves call update() every iteration).
     void prepare(const BoundaryParticles& boundary, const NeighborList& fluidNear, std::span<const glm::vec3> fluid,
-                 const PeriodicBox& box, const glm::vec3& gravity, float supportRadius, int threads) {
+                 const PeriodicBox& box, const glm::vec3& gravity, float supportRadius, int threads,
+                 std::span<const float> fluidScale = {}) {
         const kernels::CubicSpline w(supportRadius);
         const auto n = static_cast<std::uint32_t>(boundary.position.size());
         weightSum_.assign(n, 0.0f);
@@ -46,7 +50,7 @@ public:
                 const float wbf = w.value(glm::length(xbf));
                 *weight++ = wbf;
                 weights += wbf;
-                lift += glm::dot(g, xbf) * wbf;
+                lift += fluidScale.empty() ? glm::dot(g, xbf) * wbf : fluidScale[f] * glm::dot(g, xbf) * wbf;
             }
             weightSum_[b] = weights;
             gravityTerm_[b] = lift;

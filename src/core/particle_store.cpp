@@ -14,10 +14,11 @@ void ParticleStore::reserve(std::uint32_t n) {
     warmKappa.reserve(n);
     warmDivergence.reserve(n);
     material.reserve(n);
+    concentration.reserve(n);
     id.reserve(n);
 }
 
-void ParticleStore::append(const glm::vec3& x, const glm::vec3& v, float m, MaterialIndex mat, float rho0) {
+void ParticleStore::append(const glm::vec3& x, const glm::vec3& v, float m, MaterialIndex mat, float rho0, float c) {
     position.push_back(x);
     velocity.push_back(v);
     acceleration.emplace_back(0.0f);
@@ -27,6 +28,7 @@ void ParticleStore::append(const glm::vec3& x, const glm::vec3& v, float m, Mate
     warmKappa.push_back(0.0f);
     warmDivergence.push_back(0.0f);
     material.push_back(mat);
+    concentration.push_back(c);
     id.push_back(nextId_++);
 }
 
@@ -54,6 +56,7 @@ void ParticleStore::permute(std::span<const std::uint32_t> order) {
         permuteArray(mass, order, scratch);
         permuteArray(warmKappa, order, scratch);
         permuteArray(warmDivergence, order, scratch);
+        permuteArray(concentration, order, scratch);
     }
     std::vector<MaterialIndex> materialScratch;
     permuteArray(material, order, materialScratch);
@@ -71,6 +74,7 @@ void ParticleStore::clear() {
     warmKappa.clear();
     warmDivergence.clear();
     material.clear();
+    concentration.clear();
     id.clear();
     nextId_ = 0;
 }

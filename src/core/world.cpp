@@ -16,11 +16,13 @@
 #include "core/divergence_guard.hpp"
 #include "core/field_sampling.hpp"
 #include "core/kernels.hpp"
+#include "core/material_pairs.hpp"
 #include "core/parallel.hpp"
 #include "core/periodic_box.hpp"
 #include "core/validate.hpp"
 #include "neighbors/neighbor_list.hpp"
 #include "neighbors/uniform_grid.hpp"
+#include "solvers/diffusion_cleary1999.hpp"
 #include "solvers/solver.hpp"
 #include "sources/emitter.hpp"
 #include "sources/lattice.hpp"
@@ -102,6 +104,9 @@ struct World::Impl {
     PeriodicBox periodic;
     ViscosityModel viscosity;
     std::vector<MaterialDef> materials;
+    std::vector<MaterialPairDef> pairs;
+    MaterialPairs pairTables;  ///< built from materials and pairs at every step
+    DyeDiffusion diffusion;
     ParticleStore particles;
     UniformGrid grid;
     NeighborList neighbors;
@@ -181,11 +186,12 @@ struct World::Impl {
         return n;
     }
 
-    void appendLattice(const Lattice& lattice, const glm::vec3& velocity, MaterialIndex material) {
+    void appendLattice(const Lattice& lattice, const glm::vec3& velocity, MaterialIndex material,
+                       float concentration = 0.0f) {
         const float m = massOf(material);
         const float rho0 = materials[material].restDensity;
         lattice.forEach([&](const glm::vec3& x) {
-            if (clearOfObstacles(x)) particles.append(x, velocity, m, material, rho0);
+            if (clearOfObstacles(x)) particles.append(x, velocity, m, material, rho0, concentration);
         });
     }
 
@@ -221,7 +227,7 @@ struct World::Impl {
         for (EmitterState& emitter : emitters) {
             const double dropped = emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
                 if (particles.size() + countLattice(layer) > def.capacity) return false;
-                appendLattice(layer, emitter.def.velocity, emitter.def.material);
+                appendLattice(layer, emitter.def.velocity, emitter.def.material, emitter.def.concentration);
                 return true;
             });
             stats.emitterCapacityHits += dropped < 1.8e19 ? static_cast<std::uint64_t>(dropped) : ~std::uint64_t{0};
@@ -294,6 +300,40 @@ MaterialIndex World::addMaterial(const MaterialDef& material) {
 
 const std::vector<MaterialDef>& World::materials() const { return impl_->materials; }
 
+void World::setMaterialPair(const MaterialPairDef& pair) {
+    Impl& w = *impl_;
+    for (const MaterialIndex m : {pair.a, pair.b})
+        if (m >= w.materials.size())
+            throw std::invalid_argument("materialPair.materials: no material " + std::to_string(m));
+    if (!(pair.diffusivity >= 0.0f) || !std::isfinite(pair.diffusivity))
+        throw std::invalid_argument("materialPair.diffusivity: must be >= 0 m²/s, got " + show(pair.diffusivity));
+    if (pair.a != pair.b && !pair.miscible && pair.diffusivity > 0.0f)
+        throw std::invalid_argument("materialPair.diffusivity: " + show(pair.diffusivity) +
+                                    " m²/s between immiscible materials \"" + w.materials[pair.a].name + "\" and \"" +
+                                    w.materials[pair.b].name + "\" (set miscible)");
+    if (pair.a == pair.b && pair.miscible)
+        throw std::invalid_argument("materialPair.miscible: a material is always miscible with itself (\"" +
+                                    w.materials[pair.a].name + "\")");
+    for (MaterialPairDef& existing : w.pairs)
+        if ((existing.a == pair.a && existing.b == pair.b) || (existing.a == pair.b && existing.b == pair.a)) {
+            existing = pair;
+            return;
+        }
+    w.pairs.push_back(pair);
+}
+
+const std::vector<MaterialPairDef>& World::materialPairs() const { return impl_->pairs; }
+
+double World::meanConcentration() const {
+    const ParticleStore& p = impl_->particles;
+    double mass = 0.0, dye = 0.0;
+    for (std::uint32_t i = 0; i < p.size(); ++i) {
+        mass += p.mass[i];
+        dye += static_cast<double>(p.mass[i]) * p.concentration[i];
+    }
+    return mass > 0.0 ? dye / mass : 0.0;
+}
+
 float World::particleMass(MaterialIndex material) const {
     if (material >= impl_->materials.size())
         throw std::invalid_argument("material: no material " + std::to_string(material));
@@ -326,8 +366,10 @@ AddStatus World::addBlock(const BlockDef& block) {
         throw std::invalid_argument("block.material: no material " + std::to_string(block.material));
     const Lattice lattice(block.min, block.max, impl_->def.particleSpacing);
     if (!impl_->insideDomain(lattice)) return AddStatus::OutsideDomain;
+    if (!(block.concentration >= 0.0f) || !std::isfinite(block.concentration))
+        throw std::invalid_argument("block.concentration: must be finite and >= 0, got " + show(block.concentration));
     if (impl_->particles.size() + impl_->countLattice(lattice) > impl_->def.capacity) return AddStatus::OverCapacity;
-    impl_->appendLattice(lattice, block.velocity, block.material);
+    impl_->appendLattice(lattice, block.velocity, block.material, block.concentration);
     return AddStatus::Added;
 }
 
@@ -482,6 +524,8 @@ std::uint32_t World::addEmitter(const EmitterDef& emitter) {
         throw std::invalid_argument("emitter.velocity: must be non-zero and finite, got " + show(emitter.velocity));
     if (!(emitter.end > emitter.start))
         throw std::invalid_argument("emitter.end: must be after emitter.start");
+    if (!(emitter.concentration >= 0.0f) || !std::isfinite(emitter.concentration))
+        throw std::invalid_argument("emitter.concentration: must be finite and >= 0, got " + show(emitter.concentration));
     if (!impl_->insideDomain(Lattice(emitter.min, emitter.max, impl_->def.particleSpacing)))
         throw std::invalid_argument("emitter: outlet " + show(emitter.min) + ".." + show(emitter.max) +
                                     " lies outside the domain");
@@ -511,7 +555,12 @@ double World::step(double maxDt) {
                     w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.boundaryFluidNeighbors,
                     w.periodic, w.viscosity, w.threads, maxDt};
     ctx.clock = &clock;
+    w.pairTables.build(w.materials.size(), w.pairs);
+    ctx.pairs = &w.pairTables;
     const double dt = w.solver->step(ctx);
+    // Dye spreads over this step's neighbour lists at the positions the solver moved to.
+    if (w.pairTables.anyDiffusion())
+        w.diffusion.apply(w.particles, w.neighbors, w.periodic, w.pairTables, w.h, static_cast<float>(dt), w.threads);
     w.stats.lastPressureIterations = ctx.pressureIterations;
     w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);
     const float margin = w.solver->wallMargin() * w.def.particleSpacing;
@@ -606,8 +655,8 @@ void checkFits(const WorldState& s, std::size_t materials, std::size_t emitters,
     const ParticleStore& p = s.particles;
     const std::size_t n = p.position.size();
     const std::size_t sizes[] = {p.velocity.size(), p.acceleration.size(), p.density.size(), p.pressure.size(),
-                                 p.mass.size(), p.warmKappa.size(), p.warmDivergence.size(), p.material.size(),
-                                 p.id.size()};
+                                 p.mass.size(), p.warmKappa.size(), p.warmDivergence.size(), p.concentration.size(),
+                                 p.material.size(), p.id.size()};
     for (const std::size_t size : sizes)
         if (size != n) misfit("particle arrays differ in length (" + std::to_string(size) + " vs " + std::to_string(n) + ")");
     if (n > capacity) misfit(std::to_string(n) + " particles exceed the capacity " + std::to_string(capacity));
@@ -620,7 +669,8 @@ void checkFits(const WorldState& s, std::size_t materials, std::size_t emitters,
     for (std::size_t i = 0; i < n; ++i) {
         if (!sane(p.position[i]) || !sane(p.velocity[i]) || !sane(p.acceleration[i]) || !std::isfinite(p.density[i]) ||
             !std::isfinite(p.pressure[i]) || !(p.mass[i] > 0.0f) || !std::isfinite(p.mass[i]) ||
-            !std::isfinite(p.warmKappa[i]) || !std::isfinite(p.warmDivergence[i]))
+            !std::isfinite(p.warmKappa[i]) || !std::isfinite(p.warmDivergence[i]) || !(p.concentration[i] >= 0.0f) ||
+            !std::isfinite(p.concentration[i]))
             misfit("particle " + std::to_string(i) + " has a non-finite or absurd value");
         if (p.material[i] >= materials)
             misfit("particle " + std::to_string(i) + " has material " + std::to_string(p.material[i]) + " of " +

@@ -141,6 +141,7 @@ std::string encodeCheckpoint(const WorldState& s, std::string_view application) 
     payload.putArray(p.mass);
     payload.putArray(p.warmKappa);
     payload.putArray(p.warmDivergence);
+    payload.putArray(p.concentration);
     payload.putArray(p.material);
     payload.putArray(p.id);
     payload.put<std::uint32_t>(static_cast<std::uint32_t>(s.emitters.size()));
@@ -199,6 +200,7 @@ Checkpoint decodeCheckpoint(std::string_view bytes, const std::string& source) {
     r.getArray(p.mass, n, "masses");
     r.getArray(p.warmKappa, n, "warmKappa");
     r.getArray(p.warmDivergence, n, "warmDivergence");
+    r.getArray(p.concentration, n, "concentrations");
     r.getArray(p.material, n, "materials");
     r.getArray(p.id, n, "ids");
     const auto emitters = r.get<std::uint32_t>("emitter count");

@@ -27,7 +27,7 @@ std::string_view extension(Format format) {
 void writeFrame(const std::filesystem::path& file, Format format, const ParticleStore& particles) {
     const std::size_t n = particles.position.size();
     if (particles.velocity.size() != n || particles.density.size() != n || particles.pressure.size() != n ||
-        particles.material.size() != n || particles.id.size() != n) {
+        particles.material.size() != n || particles.id.size() != n || particles.concentration.size() != n) {
         std::ostringstream msg;
         msg << "tide::io: cannot write \"" << file.string() << "\"" << ": particle arrays have different sizes";
         throw std::invalid_argument(msg.str());

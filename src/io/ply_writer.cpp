@@ -22,6 +22,7 @@ void writePly(std::ostream& out, const ParticleStore& particles) {
            "property float vz\n"
            "property float density\n"
            "property float pressure\n"
+           "property float concentration\n"
            "property ushort material\n"
            "property uint id\n"
            "end_header\n";
@@ -37,6 +38,7 @@ void writePly(std::ostream& out, const ParticleStore& particles) {
         binary.put<float>(v.z);
         binary.put<float>(particles.density[i]);
         binary.put<float>(particles.pressure[i]);
+        binary.put<float>(particles.concentration[i]);
         binary.put<std::uint16_t>(particles.material[i]);
         binary.put<std::uint32_t>(particles.id[i]);
     }

@@ -84,6 +84,7 @@ SceneEstimate estimate(const Scene& scene) {
 World buildWorld(const Scene& scene) {
     World world(scene.world);
     for (const MaterialDef& m : scene.materials) world.addMaterial(m);
+    for (const MaterialPairDef& pair : scene.materialPairs) world.setMaterialPair(pair);
     for (const ObstacleDef& o : scene.obstacles) world.addObstacle(o);
     for (const WaveMakerDef& w : scene.waveMakers) world.addWaveMaker(w);
     for (const DampingZoneDef& d : scene.dampingZones) world.addDampingZone(d);

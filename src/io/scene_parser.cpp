@@ -262,6 +262,46 @@ void readMaterials(Reader& r, const json& list, Scene& scene) {
     }
 }
 
+/// "material_pairs": [{"materials": [name, name], "miscible", "diffusivity"}].
+void readMaterialPairs(Reader& r, const json& list, Scene& scene) {
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string path = indexed("material_pairs", i);
+        if (!r.object(list[i], path, {"materials", "miscible", "diffusivity"})) continue;
+        MaterialPairDef pair;
+        bool ok = true;
+        if (!list[i].contains("materials") || !list[i]["materials"].is_array() || list[i]["materials"].size() != 2 ||
+            !list[i]["materials"][0].is_string() || !list[i]["materials"][1].is_string()) {
+            r.fail(join(path, "materials"), "must be an array of two material names, got " +
+                                                (list[i].contains("materials") ? show(list[i]["materials"]) : std::string("nothing")));
+            ok = false;
+        } else {
+            MaterialIndex* ends[2] = {&pair.a, &pair.b};
+            for (std::size_t k = 0; k < 2; ++k) {
+                const std::string name = list[i]["materials"][k].get<std::string>();
+                bool found = false;
+                for (std::size_t m = 0; m < scene.materials.size(); ++m)
+                    if (scene.materials[m].name == name) {
+                        *ends[k] = static_cast<MaterialIndex>(m);
+                        found = true;
+                    }
+                if (!found) {
+                    r.fail(indexed(join(path, "materials"), k), "no material named \"" + name + "\"");
+                    ok = false;
+                }
+            }
+        }
+        if (auto v = r.boolean(list[i], "miscible", path)) pair.miscible = *v;
+        if (auto v = r.number(list[i], "diffusivity", path, false, 0.0, 1e3)) pair.diffusivity = static_cast<float>(*v);
+        if (!ok) continue;
+        if (pair.a == pair.b && pair.miscible)
+            r.fail(join(path, "miscible"), "a material is always miscible with itself");
+        else if (pair.a != pair.b && !pair.miscible && pair.diffusivity > 0.0f)
+            r.fail(join(path, "diffusivity"), "needs \"miscible\": true between two materials");
+        else
+            scene.materialPairs.push_back(pair);
+    }
+}
+
 /// Index of the material named at obj.material (default: the first material).
 std::optional<MaterialIndex> readMaterialRef(Reader& r, const json& obj, const std::string& path, const Scene& scene) {
     auto name = r.string(obj, "material", path, false);
@@ -618,7 +658,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     Reader r;
     Scene scene;
     if (!r.object(root, "", {"name", "unit_scale", "domain", "gravity", "particle_spacing", "end_time", "solver",
-                             "materials", "blocks", "emitters", "obstacles", "wavemaker", "damping", "gauges", "probes", "output", "camera"}))
+                             "materials", "material_pairs", "blocks", "emitters", "obstacles", "wavemaker", "damping", "gauges", "probes", "output", "camera"}))
         throw SceneError(r.problems);
 
     float scale = 1.0f;
@@ -671,6 +711,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     readMaterials(r, r.array(root, "materials", "", true), scene);
     if (root.contains("materials") && root["materials"].is_array() && root["materials"].empty())
         r.fail("materials", "must list at least one material");
+    readMaterialPairs(r, r.array(root, "material_pairs", "", false), scene);
 
     const json& obstacles = r.array(root, "obstacles", "", false);
     for (std::size_t i = 0; i < obstacles.size(); ++i)
@@ -684,8 +725,9 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     const json& blocks = r.array(root, "blocks", "", false);
     for (std::size_t i = 0; i < blocks.size(); ++i) {
         const std::string path = indexed("blocks", i);
-        if (!r.object(blocks[i], path, {"min", "max", "velocity", "material"})) continue;
+        if (!r.object(blocks[i], path, {"min", "max", "velocity", "material", "concentration"})) continue;
         BlockDef b;
+        if (auto c = r.number(blocks[i], "concentration", path, false, 0.0, 1e6)) b.concentration = static_cast<float>(*c);
         const bool boxOk = readBox(r, blocks[i], path, scale, b.min, b.max);
         if (auto v = r.vec3(blocks[i], "velocity", path, false)) b.velocity = *v * scale;
         const auto material = readMaterialRef(r, blocks[i], path, scene);
@@ -702,8 +744,9 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     const json& emitters = r.array(root, "emitters", "", false);
     for (std::size_t i = 0; i < emitters.size(); ++i) {
         const std::string path = indexed("emitters", i);
-        if (!r.object(emitters[i], path, {"min", "max", "velocity", "material", "start", "end"})) continue;
+        if (!r.object(emitters[i], path, {"min", "max", "velocity", "material", "start", "end", "concentration"})) continue;
         EmitterDef e;
+        if (auto c = r.number(emitters[i], "concentration", path, false, 0.0, 1e6)) e.concentration = static_cast<float>(*c);
         const bool boxOk = readBox(r, emitters[i], path, scale, e.min, e.max);
         const auto v = r.vec3(emitters[i], "velocity", path, true);
         if (v && glm::length(*v) == 0.0f) r.fail(join(path, "velocity"), "must be non-zero, got [0, 0, 0]");

@@ -39,11 +39,12 @@ void writeVtu(std::ostream& out, const ParticleStore& particles) {
     // DataArray tags it has already given new (base64) offsets, in document order, and picks
     // the wrong tag when numbers coincide (e.g. with 1, 3 or 5 points); with the block
     // reversed, the tag it wants always comes first in the document.
-    enum { Velocity, Density, Pressure, Material, Id, Points, Connectivity, Offsets, Types, ArrayCount };
+    enum { Velocity, Density, Pressure, Concentration, Material, Id, Points, Connectivity, Offsets, Types, ArrayCount };
     const ArrayLayout arrays[ArrayCount] = {
         {"Float32", "velocity", 3, count * 3 * sizeof(float)},
         {"Float32", "density", 1, count * sizeof(float)},
         {"Float32", "pressure", 1, count * sizeof(float)},
+        {"Float32", "concentration", 1, count * sizeof(float)},
         {"Int32", "material", 1, count * sizeof(std::int32_t)},
         {"UInt32", "id", 1, count * sizeof(std::uint32_t)},
         {"Float32", "Points", 3, count * 3 * sizeof(float)},
@@ -96,6 +97,8 @@ void writeVtu(std::ostream& out, const ParticleStore& particles) {
     for (const std::uint32_t id : particles.id) binary.put<std::uint32_t>(id);
     header(Material);
     for (const MaterialIndex m : particles.material) binary.put<std::int32_t>(static_cast<std::int32_t>(m));
+    header(Concentration);
+    for (const float c : particles.concentration) binary.put<float>(c);
     header(Pressure);
     for (const float p : particles.pressure) binary.put<float>(p);
     header(Density);

@@ -3,6 +3,8 @@
 /// Divergence-free SPH after Bender & Koschier 2017, "Divergence-free SPH for incompressible
 /// and viscous fluids" (IEEE TVCG 23(3)), Algorithm 1:
 ///   α_i = ρ_i / (|Σ_j m_j ∇W_ij|² + Σ_j |m_j ∇W_ij|²)                          (eq. 11)
+/// (several rest densities: the density-contrast forms of Solenthaler & Pajarola 2008,
+/// ρ_i = m_i Σ_j W_ij and the pressure in volume form, see density_contrast_solenthaler2008.hpp),
 ///   divergence-free solve:  κᵛ_i = (1/Δt) (Dρ_i/Dt) α_i,                         (eq. 15)
 ///   constant-density solve: κ_i = (ρ*_i − ρ0)/Δt² α_i,                            (eq. 12)
 ///     with ρ*_i evaluated at the predicted positions rather than linearised (eq. 9),
@@ -23,6 +25,7 @@
 
 #include "boundary/wall_pressure_adami2012.hpp"
 #include "core/kernels.hpp"
+#include "solvers/density_contrast_solenthaler2008.hpp"
 #include "solvers/pair_kernels.hpp"
 #include "solvers/solver.hpp"
 #include "solvers/xsph_monaghan1989.hpp"
@@ -75,18 +78,23 @@ private:
     std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
     std::vector<float> boundaryKappa_; ///< κ_b applied so far this step
     WallPressure wall_;
+    DensityContrast contrast_;         ///< several rest densities: Solenthaler & Pajarola 2008
+    std::vector<float> scaledKappa_;   ///< κ̃ = κ ρ0_i/ρ0_ref for the wall pressure (several rest densities)
     PairKernels fluidF_;                     ///< W'(r)/r per fluid pair
     PairKernels wallF_;                      ///< W'(r)/r per fluid–boundary pair
     std::vector<glm::vec3> fluidGradient_;   ///< Σ_j m_j ∇W_ij
     std::vector<glm::vec3> wallGradient_;    ///< Σ_b V_b ∇W_ib
     std::vector<float> wallVelocityRate_;    ///< Σ_b V_b v_b·∇W_ib (moving walls only)
-    std::vector<glm::vec4> positionMass_;    ///< (x_j, m_j)
+    std::vector<glm::vec4> positionMass_;    ///< (x_j, m_j); (x_j, 1) with a density contrast
     std::vector<glm::vec4> positionK_;       ///< (x_j, m_j k_j/ρ_j) of one iteration
     std::vector<glm::vec4> predicted_;       ///< (x_j + Δt v_j, m_j) of one iteration
     std::vector<glm::vec4> wallPositionVolume_;  ///< (x_b, V_b)
     std::vector<glm::vec4> wallPositionK_;   ///< (x_b, V_b k_b) of one iteration
     std::vector<glm::vec3> accel_;
     XsphFilter xsph_;
+    std::vector<glm::vec3> savedVelocity_;  ///< before a step that may be retaken (density contrast)
+    double dtCap_ = 1e30;              ///< s; halved when a density solve diverges (density contrast)
+    bool densityDiverged_ = false;     ///< whether the last density solve diverged (density contrast)
     double lastDt_ = 1e-3;             ///< s; the divergence solve runs before this step's dt is known
 };
 

@@ -15,10 +15,13 @@
 /// step (no sound speed: the iteration, not the time step, keeps the fluid incompressible),
 /// halved and retaken when the solve fails (Ihmsen et al. 2010).
 /// No warm start of p (the paper starts from zero each step too; see dfsph for why).
+/// Several rest densities: density and pressure force in the density-contrast forms of
+/// Solenthaler & Pajarola 2008 (density_contrast_solenthaler2008.hpp), the above for one.
 
 #include <vector>
 
 #include "boundary/wall_pressure_adami2012.hpp"
+#include "solvers/density_contrast_solenthaler2008.hpp"
 #include "solvers/solver.hpp"
 #include "solvers/xsph_monaghan1989.hpp"
 
@@ -40,6 +43,7 @@ private:
     struct Solve {
         int iterations = 0;
         bool converged = false;
+        double uncorrected = 0.0;  ///< the compression predicted without pressure
     };
     /// The prediction-correction loop for a step of length dt: pressure_ and pressureAccel_.
     Solve solvePressure(StepContext& ctx, float dt);
@@ -60,6 +64,8 @@ private:
     std::vector<float> error_;              ///< the part of it that counts as error, kg/m³
     std::vector<float> kappa_;              ///< p_i/ρ0, m²/s², for the wall pressure
     WallPressure wall_;
+    DensityContrast contrast_;        ///< several rest densities: Solenthaler & Pajarola 2008
+    std::vector<float> scaledKappa_;  ///< κ ρ0_i/ρ0_ref for the wall pressure (several rest densities)
     std::vector<glm::vec3> predicted_;      ///< x*_i, m
     std::vector<glm::vec3> accel_;          ///< gravity + viscosity, m/s²
     std::vector<glm::vec3> pressureAccel_;  ///< m/s²

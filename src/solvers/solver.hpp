@@ -14,6 +14,7 @@
 #include <tide/particles.hpp>
 
 #include "boundary/boundary_particles.hpp"
+#include "core/material_pairs.hpp"
 #include "core/phase_clock.hpp"
 #include "core/periodic_box.hpp"
 #include "neighbors/neighbor_list.hpp"
@@ -40,6 +41,7 @@ struct StepContext {
     double maxDt;            ///< the step may not be longer (e.g. to land on a frame time)
     int pressureIterations = 0;  ///< out: iterations the pressure solve took this step
     PhaseClock* clock = nullptr;  ///< where a solver books the phases of its step (may be null)
+    const MaterialPairs* pairs = nullptr;  ///< per-pair diffusivity and surface tension (may be null: none)
 
     /// x_a − x_b to the nearest periodic image: every pair vector of a solver, fluid–fluid
     /// and fluid–boundary, goes through this (the plain difference without periodic axes).

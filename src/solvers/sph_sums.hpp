@@ -21,16 +21,18 @@ namespace tide::sph {
 /// how κ_b follows κ_i.)
 inline constexpr float kBoundaryPressureMirror = 2.0f;
 
-/// ρ_i = Σ_j m_j W_ij + ρ0_i Σ_b V_b W_ib (Akinci et al. 2012, eq. 4), cubic spline.
+/// ρ_i = m_i Σ_j W_ij + ρ0_i Σ_b V_b W_ib, cubic spline: the number density of Solenthaler &
+/// Pajarola 2008 (eq. 4–5; plain Σ_j m_j W_ij for one rest density, see
+/// density_contrast_solenthaler2008.hpp) with the walls of Akinci et al. 2012 (eq. 4).
 inline void computeDensities(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const kernels::CubicSpline w(ctx.supportRadius);
     const float self = w.value(0.0f);
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
-        float rho = p.mass[i] * self;
-        for (const std::uint32_t j : ctx.neighbors.of(i))
-            rho += p.mass[j] * w.value(glm::length(ctx.delta(xi, p.position[j])));
+        float number = self;
+        for (const std::uint32_t j : ctx.neighbors.of(i)) number += w.value(glm::length(ctx.delta(xi, p.position[j])));
+        const float rho = p.mass[i] * number;
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
             boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, ctx.boundary.position[b])));

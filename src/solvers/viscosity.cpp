@@ -40,6 +40,20 @@ inline glm::vec3 wallVelocity(const glm::vec3& vi) { return -vi; }
 /// frame, 2 v_b − v_i. (Walls at rest keep the form above, so their sums stay bit-identical.)
 inline glm::vec3 wallVelocity(const glm::vec3& vi, const glm::vec3& vb) { return 2.0f * vb - vi; }
 
+/// μ_i + μ_j of a pair in the models' sums, with the interface viscosity between two
+/// materials: twice their harmonic mean, μ_ij = 2μ_iμ_j/(μ_i + μ_j) (Hu & Adams 2006, "A
+/// multi-phase SPH method for macroscopic and mesoscopic flows", J. Comput. Phys. 213, the
+/// inter-particle viscosity of their momentum equation; Cleary 1998 takes the same mean for
+/// conductivities). It keeps the shear stress continuous across an interface: the flux
+/// through two layers in series is set by the harmonic mean, and a 30× oil does not drag
+/// water along as if the water were 15× thicker (the arithmetic mean would). Equal viscosities
+/// give μ_i + μ_j exactly.
+inline float pairViscositySum(float mui, float muj) {
+    if (mui == muj) return mui + muj;
+    const float sum = mui + muj;
+    return sum > 0.0f ? 4.0f * mui * muj / sum : 0.0f;
+}
+
 void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
     const ParticleStore& p = ctx.particles;
     const kernels::CubicSpline w(ctx.supportRadius);
@@ -52,7 +66,7 @@ void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
             const glm::vec3 rij = ctx.delta(xi, p.position[j]);
             const float r = glm::length(rij);
-            const float nu = (mui + ctx.materials[p.material[j]].viscosity) / (p.density[i] + p.density[j]);
+            const float nu = pairViscositySum(mui, ctx.materials[p.material[j]].viscosity) / (p.density[i] + p.density[j]);
             const float vr = glm::dot(vi - p.velocity[j], rij);
             sum += (p.mass[j] / p.density[j] * nu * vr / (r * r + 0.01f * h2)) * w.gradient(rij, r);
         }
@@ -86,7 +100,8 @@ void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
             const float r = glm::length(rij);
             // r_ij · ∇W_ij / (r² + 0.01ĥ²) = r W'(r) / (r² + 0.01ĥ²) ≤ 0
             const float f = r * w.derivative(r) / (r * r + 0.01f * h2);
-            sum += (p.mass[j] * (mui + ctx.materials[p.material[j]].viscosity) / p.density[j] * f) * (vi - p.velocity[j]);
+            sum += (p.mass[j] * pairViscositySum(mui, ctx.materials[p.material[j]].viscosity) / p.density[j] * f) *
+                   (vi - p.velocity[j]);
         }
         // Walls, mirrored: m_b = Ψ_b = ρ0_i V_b, ρ_b = ρ_i, μ_b = μ_i; v_b no-slip.
         if (mui > 0.0f) {
@@ -122,8 +137,8 @@ void addMuller2003(const StepContext& ctx, std::span<glm::vec3> accel) {
         glm::vec3 sum(0.0f);
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
             const float r = glm::length(ctx.delta(xi, p.position[j]));
-            // μ_ij = (μ_i + μ_j)/2 keeps the force antisymmetric: momentum is conserved between materials.
-            const float muij = 0.5f * (mui + ctx.materials[p.material[j]].viscosity);
+            // A symmetric μ_ij keeps the force antisymmetric: momentum is conserved between materials.
+            const float muij = 0.5f * pairViscositySum(mui, ctx.materials[p.material[j]].viscosity);
             sum += (p.mass[j] / p.density[j] * muij * viscosity.laplacian(r)) * (p.velocity[j] - vi);
         }
         // Walls, mirrored as in the classic pressure sum: m_b/ρ_b = V_b, μ_b = μ_i; v_b no-slip.
@@ -171,8 +186,10 @@ void addViscosity(const StepContext& ctx, std::span<glm::vec3> accel) {
 }
 
 float maxKinematicViscosity(const StepContext& ctx) {
-    if (ctx.viscosity == ViscosityModel::Xsph) return 0.0f;
-    float nu = 0.0f;
+    // Dye diffusion (diffusion_cleary1999.hpp) is explicit too, with the same limit on D.
+    const float diffusivity = ctx.pairs ? ctx.pairs->maxDiffusivity() : 0.0f;
+    if (ctx.viscosity == ViscosityModel::Xsph) return diffusivity;
+    float nu = diffusivity;
     for (const MaterialDef& m : ctx.materials) nu = std::max(nu, m.viscosity / m.restDensity);
     return nu;
 }

@@ -15,6 +15,10 @@
 /// through the wall (v_b = −v_i, after Morris et al. 1997), so the fluid sticks to the wall
 /// surface (no slip): a channel flow has the parabolic profile (tests/test_poiseuille.cpp).
 /// Moving walls (BoundaryParticles::moving) mirror it in the wall's frame: 2 v_b − v_i.
+///
+/// Between two materials every model takes the interface viscosity μ_ij = 2μ_iμ_j/(μ_i + μ_j),
+/// the harmonic mean (Hu & Adams 2006), in place of the (μ_i + μ_j)/2 written below; equal
+/// viscosities give the formulas as written.
 
 #include <span>
 #include <string_view>
@@ -57,8 +61,8 @@ ViscosityModel viscosityModel(std::string_view name, ViscosityModel solverDefaul
 /// accel[i] += the physical viscous acceleration of particle i (nothing for Xsph).
 void addViscosity(const StepContext& ctx, std::span<glm::vec3> accel);
 
-/// Largest kinematic viscosity μ/ρ0 of the materials that the model uses, m²/s (0 for
-/// Xsph): the explicit viscous time-step limit.
+/// Largest kinematic viscosity μ/ρ0 of the materials that the model uses (0 for Xsph), or
+/// dye diffusivity D of a material pair if larger, m²/s: the explicit time-step limit.
 float maxKinematicViscosity(const StepContext& ctx);
 
 }  // namespace tide

@@ -24,24 +24,31 @@ double WcsphBecker2007::step(StepContext& ctx) {
     // Walls take the pressure of the fluid around them, extrapolated hydrostatically.
     kappa_.resize(n);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { kappa_[i] = p.pressure[i] / p.density[i]; });
+    contrast_.prepare(p, ctx.materials, ctx.threads);
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
-                  ctx.supportRadius, ctx.threads);
-    wall_.update(ctx.boundaryFluidNeighbors, kappa_, ctx.threads);
+                  ctx.supportRadius, ctx.threads, contrast_.scale());
+    wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa_, scaledKappa_, ctx.threads), ctx.threads);
     const auto wallKappa = wall_.kappa();
     const kernels::CubicSpline w(ctx.supportRadius);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
-        const float pi = p.pressure[i] / (p.density[i] * p.density[i]);
+        // Density contrast (Solenthaler & Pajarola 2008, eq. 6): F_i = −Σ_j (p_i V_i² + p_j V_j²) ∇W_ij,
+        // V = m/ρ, a_i = F_i/m_i (Becker & Teschner's Σ_j m_j (p_i/ρ_i² + p_j/ρ_j²) ∇W_ij for one mass).
+        const float mi = p.mass[i];
+        const float pi = mi * p.pressure[i] / (p.density[i] * p.density[i]);
         glm::vec3 sum(0.0f);
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
             const glm::vec3 rij = ctx.delta(xi, p.position[j]);
-            sum += (p.mass[j] * (pi + p.pressure[j] / (p.density[j] * p.density[j]))) * w.gradient(rij, glm::length(rij));
+            const float vj = p.mass[j] / p.density[j];
+            sum += (pi + p.pressure[j] * vj * vj / mi) * w.gradient(rij, glm::length(rij));
         }
-        // Ψ_b (p_i/ρ_i² + p_b/ρ_b²) with ρ_b = ρ_i (Akinci et al. 2012, Adami et al. 2012).
+        // Ψ_b (p_i/ρ_i² + p_b/ρ_b²) with ρ_b = ρ_i (Akinci et al. 2012, Adami et al. 2012); the
+        // wall's κ̃_b is p_b/ρ0_ref, read as κ_b = κ̃_b ρ0_ref/ρ0_i for fluid i.
         const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
+        const float wallScale = 1.0f / contrast_.scale(i);
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
-            sum += (ctx.boundary.volume[b] * psi * (kappa_[i] + wallKappa[b])) * w.gradient(rib, glm::length(rib));
+            sum += (ctx.boundary.volume[b] * psi * (kappa_[i] + wallScale * wallKappa[b])) * w.gradient(rib, glm::length(rib));
         }
         p.acceleration[i] = accel_[i] - sum;
     });

@@ -7,11 +7,15 @@
 /// (eq. 5; boundary particles after Akinci et al. 2012 with the wall pressure p_b of Adami et
 /// al. 2012, see boundary/wall_pressure_adami2012.hpp), the cubic spline kernel, physical
 /// viscosity (SolverDef::viscosity, Morris et al. 1997 by default), XSPH smoothing, and a
-/// CFL/force time step with c = SolverDef::soundSpeed.
+/// CFL/force time step with c = SolverDef::soundSpeed. Several rest densities: the
+/// density-contrast forms of Solenthaler & Pajarola 2008 (ρ_i = m_i Σ_j W_ij, pressure force
+/// −Σ_j (p_i V_i² + p_j V_j²) ∇W_ij / m_i; density_contrast_solenthaler2008.hpp), which are
+/// the above for one rest density.
 
 #include <vector>
 
 #include "boundary/wall_pressure_adami2012.hpp"
+#include "solvers/density_contrast_solenthaler2008.hpp"
 #include "solvers/solver.hpp"
 #include "solvers/xsph_monaghan1989.hpp"
 
@@ -27,6 +31,8 @@ private:
     std::vector<glm::vec3> accel_;
     std::vector<float> kappa_;  ///< p/ρ per particle, m²/s²
     WallPressure wall_;
+    DensityContrast contrast_;
+    std::vector<float> scaledKappa_;  ///< κ ρ0_i/ρ0_ref for the wall pressure (several rest densities)
     XsphFilter xsph_;
 };
 

@@ -25,7 +25,7 @@
 namespace tide::io {
 
 /// The format version written; files of another version are refused.
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2;  // 2: dye concentration per particle
 
 /// A checkpoint that cannot be used; what() names the file and the problem.
 class CheckpointError : public std::runtime_error {

@@ -50,6 +50,7 @@ struct Scene {
     WorldDef world;
     double endTime = 1.0;                     ///< s
     std::vector<MaterialDef> materials;
+    std::vector<MaterialPairDef> materialPairs;  ///< key "material_pairs", material indices resolved from names
     std::vector<ObstacleDef> obstacles;
     std::vector<BlockDef> blocks;             ///< material indices resolved from names
     std::vector<EmitterDef> emitters;
