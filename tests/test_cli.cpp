@@ -235,9 +235,20 @@ TEST(Cli, RefusesAnotherRunsFolderUnlessForced) {
     EXPECT_NE(refused.output.find("--force"), std::string::npos) << refused.output;
     EXPECT_EQ(fs::last_write_time(out / "frame_00001.vtu"), before);  // nothing touched
     std::ofstream(out / "notes.txt") << "mine";
+    std::ofstream(out / "gauges.csv") << "time,old\n0,0.1\n";  // a wave run's, this scene has no gauges
     EXPECT_EQ(run(kTide + " run " + scene.string() + " --quiet --force --out " + out.string()).exit, 0);
     EXPECT_TRUE(fs::exists(out / "notes.txt"));  // --force replaces only tide's own files
+    EXPECT_FALSE(fs::exists(out / "gauges.csv"));  // no stale measurements beside the new frames
     EXPECT_TRUE(fs::exists(out / "frame_00002.vtu"));
+}
+
+TEST(Cli, AFolderWithOnlyGaugesHoldsAnotherRun) {
+    const fs::path out = scratch("gauges_only_out");
+    fs::create_directories(out);
+    std::ofstream(out / "gauges.csv") << "time,g1\n0,0.3\n";
+    const Result refused = run(kTide + " run " + writeScene("gauges_only", smallScene()).string() + " --quiet --out " + out.string());
+    EXPECT_EQ(refused.exit, 2);
+    EXPECT_NE(refused.output.find("holds another run"), std::string::npos) << refused.output;
 }
 
 TEST(Cli, ShowsAProgressBarOnATerminal) {

@@ -9,19 +9,20 @@ namespace tide::cli {
 namespace fs = std::filesystem;
 
 namespace {
+/// What `tide run` and `tide render` write: frames (and rendered images), the series file,
+/// stats, gauges and probes, checkpoints. --force replaces these and nothing else.
 bool isFinishedOutput(const std::string& name) {
-    static const std::regex frame(R"(frame_\d{5,}\.(vtu|ply|csv))");
+    static const std::regex frame(R"(frame_\d{5,}\.(vtu|ply|csv|png))");
     static const std::regex checkpoint(R"(checkpoint_\d{5,}\.tidecp)");
-    return name == "frames.pvd" || name == "stats.json" || std::regex_match(name, frame) ||
-           std::regex_match(name, checkpoint);
+    return name == "frames.pvd" || name == "stats.json" || name == "gauges.csv" || name == "probes.csv" ||
+           std::regex_match(name, frame) || std::regex_match(name, checkpoint);
 }
 
 /// The temporary name io::writeFileAtomically gives an output: `.NAME.tmp-PID-N`.
 bool isTemporaryOutput(const std::string& name) {
     static const std::regex temporary(R"(\.(.+)\.tmp-\d+-\d+)");
     std::smatch m;
-    return std::regex_match(name, m, temporary) &&
-           (isFinishedOutput(m[1].str()) || m[1] == "gauges.csv" || m[1] == "probes.csv");
+    return std::regex_match(name, m, temporary) && isFinishedOutput(m[1].str());
 }
 }  // namespace
 
