@@ -69,8 +69,6 @@ struct CandidateSet {
     }
 };
 
-constexpr std::uint32_t kNone = 0xffffffffu;
-
 }  // namespace
 
 template <class ForEachParticleOfChunk>
