@@ -72,15 +72,17 @@ struct CandidateSet {
 }  // namespace
 
 template <class ForEachParticleOfChunk>
-void NeighborList::concatenateChunks(int chunks, ForEachParticleOfChunk&& forEachParticleOfChunk) {
+void NeighborList::linkChunks(int chunks, ForEachParticleOfChunk&& forEachParticleOfChunk) {
     std::vector<std::uint64_t> base(static_cast<std::size_t>(chunks) + 1, 0);
     for (int c = 0; c < chunks; ++c) base[c + 1] = base[c] + chunkBuffers_[static_cast<std::size_t>(c)].size();
-    indices_.resize(base[chunks]);
+    pairs_ = base[chunks];
 #pragma omp parallel for schedule(static, 1) num_threads(chunks)
     for (int c = 0; c < chunks; ++c) {
-        const auto& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
-        std::copy(buffer.begin(), buffer.end(), indices_.begin() + static_cast<std::ptrdiff_t>(base[c]));
-        forEachParticleOfChunk(c, [&](std::uint32_t i) { begin_[i] += base[c]; });
+        const std::uint32_t* buffer = chunkBuffers_[static_cast<std::size_t>(c)].data();
+        forEachParticleOfChunk(c, [&](std::uint32_t i) {
+            first_[i] = buffer + begin_[i];
+            begin_[i] += base[c];
+        });
     }
 }
 
@@ -88,6 +90,7 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
     const auto n = static_cast<std::uint32_t>(positions.size());
     const float radius2 = radius * radius;
     begin_.resize(n);
+    first_.resize(n);
     count_.resize(n);
     // Cells are split into one contiguous range per thread, balanced by particle count.
     const int chunks = n >= kParallelGrain ? threads : 1;
@@ -127,7 +130,7 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
             }
         });
     }
-    concatenateChunks(chunks, [&](int c, auto&& f) {
+    linkChunks(chunks, [&](int c, auto&& f) {
         forEachCell(c, [&](std::uint32_t cell) {
             for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) f(sorted[k]);
         });
@@ -139,6 +142,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
     const auto n = static_cast<std::uint32_t>(queries.size());
     const float radius2 = radius * radius;
     begin_.resize(n);
+    first_.resize(n);
     count_.resize(n);
     const int chunks = n >= kParallelGrain ? threads : 1;
     chunkBuffers_.resize(static_cast<std::size_t>(chunks));
@@ -175,7 +179,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
             count_[i] = static_cast<std::uint32_t>(buffer.size() - begin_[i]);
         }
     }
-    concatenateChunks(chunks, [&](int c, auto&& f) {
+    linkChunks(chunks, [&](int c, auto&& f) {
         for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) f(i);
     });
 }

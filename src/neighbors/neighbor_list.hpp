@@ -4,8 +4,10 @@
 /// Built once per step from a UniformGrid and reused by every pass of that step.
 /// A particle's neighbours come in a fixed order (grid cell order, then index), never
 /// including the particle itself, and never capped. Each particle's list is a contiguous
-/// slice of one index array (begin + count per particle, so lists may be laid out in cell
-/// order for speed while being looked up by particle index).
+/// slice of the index buffer of the thread that found it (a pointer + count per particle,
+/// so lists may be laid out in cell order for speed while being looked up by particle
+/// index); the buffers are the storage, not concatenated into one array, which would hold
+/// every pair twice at the peak (4 bytes a pair, ~140 bytes a fluid particle).
 /// On the periodic axes of the grid's PeriodicBox, distances are to the nearest image.
 
 #include <cstdint>
@@ -20,6 +22,13 @@ namespace tide {
 
 class NeighborList {
 public:
+    NeighborList() = default;
+    // first_ points into chunkBuffers_: a copy would point into the original's buffers.
+    NeighborList(const NeighborList&) = delete;
+    NeighborList& operator=(const NeighborList&) = delete;
+    NeighborList(NeighborList&&) noexcept = default;
+    NeighborList& operator=(NeighborList&&) noexcept = default;
+
     /// Find, for every particle, all others with |x_i − x_j|² ≤ radius² (nearest image on the
     /// grid's periodic axes). The grid must have been built from the same positions with a
     /// cell size ≥ radius.
@@ -29,25 +38,25 @@ public:
     void buildCross(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
                     std::span<const glm::vec3> queries, float radius, int threads);
 
-    [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const {
-        return {indices_.data() + begin_[i], count_[i]};
-    }
+    [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const { return {first_[i], count_[i]}; }
     /// Position of i's first neighbour in the list's pair order: per-pair data computed
     /// alongside the list (e.g. kernel factors) is indexed by offset(i) + k.
     [[nodiscard]] std::uint64_t offset(std::uint32_t i) const { return begin_[i]; }
     [[nodiscard]] std::uint32_t particleCount() const { return static_cast<std::uint32_t>(count_.size()); }
-    [[nodiscard]] std::uint64_t pairCount() const { return indices_.size(); }
+    [[nodiscard]] std::uint64_t pairCount() const { return pairs_; }
 
 private:
-    /// Concatenate the per-chunk buffers into indices_ and shift each particle's begin_ by
-    /// its chunk's base; `forEachParticleOfChunk(c, f)` calls f(i) for chunk c's particles.
+    /// Once every chunk's buffer is final: points each particle's first_ into its chunk's
+    /// buffer and shifts its begin_ by the pairs of the chunks before;
+    /// `forEachParticleOfChunk(c, f)` calls f(i) for chunk c's particles.
     template <class ForEachParticleOfChunk>
-    void concatenateChunks(int chunks, ForEachParticleOfChunk&& forEachParticleOfChunk);
+    void linkChunks(int chunks, ForEachParticleOfChunk&& forEachParticleOfChunk);
 
-    std::vector<std::uint64_t> begin_;
+    std::vector<std::uint64_t> begin_;         ///< offset of i's first pair in the list's pair order
+    std::vector<const std::uint32_t*> first_;  ///< i's first neighbour in its chunk's buffer
     std::vector<std::uint32_t> count_;
-    std::vector<std::uint32_t> indices_;
-    std::vector<std::vector<std::uint32_t>> chunkBuffers_;  ///< per-thread scratch, kept between builds
+    std::uint64_t pairs_ = 0;
+    std::vector<std::vector<std::uint32_t>> chunkBuffers_;  ///< per-thread lists, capacity kept between builds
 };
 
 }  // namespace tide
