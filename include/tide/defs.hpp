@@ -23,6 +23,12 @@ struct MaterialDef {
     float restDensity = 1000.0f;            ///< kg/m³
     float viscosity = 0.001f;               ///< dynamic viscosity μ, Pa·s
     glm::vec3 color{0.2f, 0.45f, 0.9f};     ///< linear RGB in [0, 1], for renderers
+    /// Adhesion β to walls and obstacles (Akinci, Akinci & Teschner 2013, eq. 6–7), ≥ 0: the
+    /// boundary particles within a kernel support pull this fluid's particles towards them
+    /// (a_i = −β Σ_b ρ0_i V_b A(r_ib) r̂_ib, A the paper's adhesion spline). Like γ of
+    /// MaterialPairDef::surfaceTension it is a model parameter, not a physical one; 0 (the
+    /// default) switches it off.
+    float adhesion = 0.0f;
 };
 
 /// How two materials (or a material with itself, a == b) meet: World::setMaterialPair.
@@ -41,6 +47,17 @@ struct MaterialPairDef {
     /// Physical dyes in water are ~1e-9; visible mixing over seconds at centimetre spacings
     /// needs ~1e-4. The explicit update limits dt to 0.125 s²/D (s the particle spacing).
     float diffusivity = 0.0f;
+    /// Surface or interface tension γ ≥ 0 of Akinci, Akinci & Teschner 2013 ("Versatile
+    /// surface tension and adhesion for SPH fluids", ACM TOG 32(6)), cohesion plus curvature
+    /// (solvers/surface_tension_akinci2013.hpp). A model parameter, not a tension in N/m:
+    /// its effect depends on the rest density and little on the spacing.
+    ///  - a == b: surface tension of a. Its particles attract each other (cohesion) and
+    ///    smooth the surface they bound (curvature term), which shrinks a's free surface and
+    ///    also every interface of a with another material (a does not attract the other one).
+    ///  - a ≠ b: interface tension between a and b: the same terms with the signs that push a
+    ///    and b particles apart, so the a–b interface shrinks (a blob of b in a rounds up).
+    /// 0 (the default) switches it off, at no cost. Limits dt (the force criterion, see there).
+    float surfaceTension = 0.0f;
 };
 
 /// Pressure from density.

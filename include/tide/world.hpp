@@ -146,7 +146,7 @@ public:
     [[nodiscard]] const std::vector<MaterialDef>& materials() const;
     /// Mass of one particle of a material, kg (ρ0 times the volume a lattice particle fills).
     [[nodiscard]] float particleMass(MaterialIndex material) const;
-    /// Set how two added materials meet (miscibility, dye diffusivity; see
+    /// Set how two added materials meet (miscibility, dye diffusivity, surface tension; see
     /// MaterialPairDef), replacing an earlier setting of the same pair in either order.
     /// Throws std::invalid_argument naming the field at fault.
     void setMaterialPair(const MaterialPairDef& pair);

@@ -9,6 +9,7 @@
 /// (as in SPlisHSPlasH's CubicKernel). Gradients take r⃗ = x_i − x_j and r = |r⃗|.
 
 #include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include <glm/vec3.hpp>
@@ -125,6 +126,35 @@ struct CubicSpline {
         const float second = q <= 0.5f ? sigma * invH * invH * (36.0f * q - 12.0f)
                                        : sigma * invH * invH * 12.0f * (1.0f - q);
         return second + 2.0f * derivative(r) / r;
+    }
+};
+
+/// The cohesion spline of Akinci, Akinci & Teschner 2013 (eq. 2), support c:
+/// C(r) = 32/(π c⁹) · { (c − r)³ r³ for c/2 < r ≤ c;  2(c − r)³ r³ − c⁶/64 for 0 < r ≤ c/2; 0 else }.
+/// Positive (attracting) beyond 0.273 c, peaking at c/2 with 1/(2π c³), negative (repelling)
+/// closer in. A force shape, not a normalised smoothing kernel.
+struct Cohesion {
+    float c, norm, c6over64;
+    explicit Cohesion(float support)
+        : c(support), norm(32.0f / (pi * support * support * support * support * support * support * support * support * support)),
+          c6over64(support * support * support * support * support * support / 64.0f) {}
+    [[nodiscard]] float value(float r) const {
+        if (r >= c || r <= 0.0f) return 0.0f;
+        const float outer = (c - r) * r;
+        const float cube = outer * outer * outer;
+        return norm * (2.0f * r > c ? cube : 2.0f * cube - c6over64);
+    }
+};
+
+/// The adhesion spline of Akinci, Akinci & Teschner 2013 (eq. 7), support c:
+/// A(r) = 0.007/c^3.25 · (−4r²/c + 6r − 2c)^¼ for c/2 < r ≤ c, 0 else: attraction to a
+/// boundary particle only at the distance of the first layers, peaking at 3c/4.
+struct Adhesion {
+    float c, norm;
+    explicit Adhesion(float support) : c(support), norm(0.007f / std::pow(support, 3.25f)) {}
+    [[nodiscard]] float value(float r) const {
+        if (r >= c || 2.0f * r <= c) return 0.0f;
+        return norm * std::pow(std::max(-4.0f * r * r / c + 6.0f * r - 2.0f * c, 0.0f), 0.25f);
     }
 };
 

@@ -75,6 +75,8 @@ void validateMaterial(const MaterialDef& m) {
     requirePositive("material.restDensity", m.restDensity);
     if (!(m.viscosity >= 0.0f) || !std::isfinite(m.viscosity))
         throw std::invalid_argument("material.viscosity: must be >= 0 Pa·s, got " + show(m.viscosity));
+    if (!(m.adhesion >= 0.0f) || !std::isfinite(m.adhesion))
+        throw std::invalid_argument("material.adhesion: must be >= 0, got " + show(m.adhesion));
 }
 
 /// Σ_k W_poly6(|k|·s) over the cubic lattice: a lattice particle of mass ρ0 / this sum has
@@ -307,6 +309,8 @@ void World::setMaterialPair(const MaterialPairDef& pair) {
             throw std::invalid_argument("materialPair.materials: no material " + std::to_string(m));
     if (!(pair.diffusivity >= 0.0f) || !std::isfinite(pair.diffusivity))
         throw std::invalid_argument("materialPair.diffusivity: must be >= 0 m²/s, got " + show(pair.diffusivity));
+    if (!(pair.surfaceTension >= 0.0f) || !std::isfinite(pair.surfaceTension))
+        throw std::invalid_argument("materialPair.surfaceTension: must be >= 0, got " + show(pair.surfaceTension));
     if (pair.a != pair.b && !pair.miscible && pair.diffusivity > 0.0f)
         throw std::invalid_argument("materialPair.diffusivity: " + show(pair.diffusivity) +
                                     " m²/s between immiscible materials \"" + w.materials[pair.a].name + "\" and \"" +

@@ -240,10 +240,12 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     if (auto v = r.number(j, "support_ratio", path, false, 1.0, 4.0)) scene.world.supportRatio = static_cast<float>(*v);
 }
 
-void readMaterials(Reader& r, const json& list, Scene& scene) {
+/// "materials": [...]; `ownTension` gets each material's `surface_tension` shortcut (the
+/// pair of the material with itself, merged into the pairs by readMaterialPairs).
+void readMaterials(Reader& r, const json& list, Scene& scene, std::vector<std::optional<float>>& ownTension) {
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string path = indexed("materials", i);
-        if (!r.object(list[i], path, {"name", "density", "viscosity", "color"})) continue;
+        if (!r.object(list[i], path, {"name", "density", "viscosity", "color", "surface_tension", "adhesion"})) continue;
         MaterialDef m;
         if (auto name = r.string(list[i], "name", path, true)) {
             for (const MaterialDef& other : scene.materials)
@@ -252,6 +254,10 @@ void readMaterials(Reader& r, const json& list, Scene& scene) {
         }
         if (auto v = r.number(list[i], "density", path, true, 0.0, 1e6, true)) m.restDensity = static_cast<float>(*v);
         if (auto v = r.number(list[i], "viscosity", path, false, 0.0, 1e6)) m.viscosity = static_cast<float>(*v);
+        if (auto v = r.number(list[i], "adhesion", path, false, 0.0, 1e6)) m.adhesion = static_cast<float>(*v);
+        std::optional<float> tension;
+        if (auto v = r.number(list[i], "surface_tension", path, false, 0.0, 1e6)) tension = static_cast<float>(*v);
+        ownTension.push_back(tension);
         if (auto c = r.vec3(list[i], "color", path, false)) {
             if (glm::any(glm::lessThan(*c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(*c, glm::vec3(1.0f))))
                 r.fail(join(path, "color"), "components must be in [0, 1], got " + showVec(*c));
@@ -262,11 +268,14 @@ void readMaterials(Reader& r, const json& list, Scene& scene) {
     }
 }
 
-/// "material_pairs": [{"materials": [name, name], "miscible", "diffusivity"}].
-void readMaterialPairs(Reader& r, const json& list, Scene& scene) {
+/// "material_pairs": [{"materials": [name, name], "miscible", "diffusivity", "surface_tension"}],
+/// then the materials' `surface_tension` shortcuts (`ownTension`, see readMaterials) as the
+/// pairs (a, a); a material may not give it both ways.
+void readMaterialPairs(Reader& r, const json& list, Scene& scene, const std::vector<std::optional<float>>& ownTension) {
+    std::vector<bool> pairGaveTension;  // per scene.materialPairs entry
     for (std::size_t i = 0; i < list.size(); ++i) {
         const std::string path = indexed("material_pairs", i);
-        if (!r.object(list[i], path, {"materials", "miscible", "diffusivity"})) continue;
+        if (!r.object(list[i], path, {"materials", "miscible", "diffusivity", "surface_tension"})) continue;
         MaterialPairDef pair;
         bool ok = true;
         if (!list[i].contains("materials") || !list[i]["materials"].is_array() || list[i]["materials"].size() != 2 ||
@@ -292,13 +301,38 @@ void readMaterialPairs(Reader& r, const json& list, Scene& scene) {
         }
         if (auto v = r.boolean(list[i], "miscible", path)) pair.miscible = *v;
         if (auto v = r.number(list[i], "diffusivity", path, false, 0.0, 1e3)) pair.diffusivity = static_cast<float>(*v);
+        const auto tension = r.number(list[i], "surface_tension", path, false, 0.0, 1e6);
+        if (tension) pair.surfaceTension = static_cast<float>(*tension);
         if (!ok) continue;
-        if (pair.a == pair.b && pair.miscible)
+        if (pair.a == pair.b && pair.miscible) {
             r.fail(join(path, "miscible"), "a material is always miscible with itself");
-        else if (pair.a != pair.b && !pair.miscible && pair.diffusivity > 0.0f)
+        } else if (pair.a != pair.b && !pair.miscible && pair.diffusivity > 0.0f) {
             r.fail(join(path, "diffusivity"), "needs \"miscible\": true between two materials");
-        else
+        } else {
             scene.materialPairs.push_back(pair);
+            pairGaveTension.push_back(list[i].contains("surface_tension"));
+        }
+    }
+    for (std::size_t m = 0; m < ownTension.size() && m < scene.materials.size(); ++m) {
+        if (!ownTension[m]) continue;
+        const auto own = static_cast<MaterialIndex>(m);
+        bool merged = false;
+        for (std::size_t k = 0; k < scene.materialPairs.size(); ++k) {
+            MaterialPairDef& pair = scene.materialPairs[k];
+            if (pair.a != own || pair.b != own) continue;
+            if (pairGaveTension[k])
+                r.fail(join(indexed("materials", m), "surface_tension"),
+                       "\"" + scene.materials[m].name + "\" also has a surface_tension in material_pairs; give it once");
+            else
+                pair.surfaceTension = *ownTension[m];
+            merged = true;
+        }
+        if (!merged) {
+            MaterialPairDef pair;
+            pair.a = pair.b = own;
+            pair.surfaceTension = *ownTension[m];
+            scene.materialPairs.push_back(pair);
+        }
     }
 }
 
@@ -708,10 +742,11 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
         }
     }
 
-    readMaterials(r, r.array(root, "materials", "", true), scene);
+    std::vector<std::optional<float>> ownTension;
+    readMaterials(r, r.array(root, "materials", "", true), scene, ownTension);
     if (root.contains("materials") && root["materials"].is_array() && root["materials"].empty())
         r.fail("materials", "must list at least one material");
-    readMaterialPairs(r, r.array(root, "material_pairs", "", false), scene);
+    readMaterialPairs(r, r.array(root, "material_pairs", "", false), scene, ownTension);
 
     const json& obstacles = r.array(root, "obstacles", "", false);
     for (std::size_t i = 0; i < obstacles.size(); ++i)

@@ -7,6 +7,7 @@
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
 #include "solvers/equation_of_state.hpp"
+#include "solvers/surface_tension_akinci2013.hpp"
 #include "solvers/time_step.hpp"
 #include "solvers/viscosity.hpp"
 
@@ -87,6 +88,9 @@ double ClassicMuller2003::step(StepContext& ctx) {
     computeDensityAndPressure(ctx);
     ctx.lap(Phase::Density);
     computeAccelerations(ctx);  // pressure and viscosity in one pass
+    // Surface tension and adhesion (Akinci et al. 2013), when set: their force limit is in
+    // stableTimeStep's criterion on the total acceleration.
+    addSurfaceTension(ctx, p.acceleration);
     ctx.lap(Phase::PressureSolve);
 
     const auto n = p.size();

@@ -361,13 +361,9 @@ double DfsphBender2017::step(StepContext& ctx) {
     const int divergenceIterations = solveDivergence(ctx);
     ctx.lap(Phase::PressureSolve);
 
-    sph::addGravityAndViscosity(ctx, accel_);
+    const float tensionAccel = sph::addNonPressureForces(ctx, accel_);
     ctx.lap(Phase::NonPressureForces);
-    const float nu = sph::maxKinematicViscosity(ctx);
-    SolverDef limits = ctx.solver;
-    // Explicit viscosity's limit, but never below the user's floor min_dt.
-    if (nu > 0.0f)
-        limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, 0.125f * ctx.particleSpacing * ctx.particleSpacing / nu));
+    SolverDef limits = sph::explicitForceLimits(ctx, tensionAccel);
     if (!contrast_.uniform())
         limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, DensityContrast::timeStepLimit(
                                     ctx.materials, glm::length(ctx.gravity), ctx.particleSpacing, ctx.solver.forceNumber)));

@@ -183,12 +183,9 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity, ctx.supportRadius,
                   ctx.threads, contrast_.scale());
     ctx.lap(Phase::Density);
-    sph::addGravityAndViscosity(ctx, accel_);
+    const float tensionAccel = sph::addNonPressureForces(ctx, accel_);
     ctx.lap(Phase::NonPressureForces);
-    const float nu = sph::maxKinematicViscosity(ctx);
-    SolverDef limits = ctx.solver;
-    if (nu > 0.0f)
-        limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, 0.125f * ctx.particleSpacing * ctx.particleSpacing / nu));
+    SolverDef limits = sph::explicitForceLimits(ctx, tensionAccel);
     if (!contrast_.uniform())
         limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, DensityContrast::timeStepLimit(
                                     ctx.materials, glm::length(ctx.gravity), ctx.particleSpacing, ctx.solver.forceNumber)));

@@ -1,13 +1,15 @@
 #pragma once
 /// \file
-/// Sums shared by the solvers built on the cubic spline kernel (wcsph, dfsph): density
-/// with Akinci et al. 2012 boundary contributions, and gravity plus viscosity.
+/// Sums shared by the solvers built on the cubic spline kernel (wcsph, pcisph, dfsph): density
+/// with Akinci et al. 2012 boundary contributions, and the non-pressure forces (gravity,
+/// viscosity, surface tension) with their time-step limits.
 
 #include <glm/geometric.hpp>
 
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
 #include "solvers/solver.hpp"
+#include "solvers/surface_tension_akinci2013.hpp"
 #include "solvers/viscosity.hpp"
 
 namespace tide::sph {
@@ -41,14 +43,31 @@ inline void computeDensities(StepContext& ctx) {
 }
 
 /// `accel` = gravity + the physical viscosity of the model SolverDef::viscosity names
-/// (Morris et al. 1997 by default; see viscosity.hpp).
-inline void addGravityAndViscosity(StepContext& ctx, std::vector<glm::vec3>& accel) {
+/// (Morris et al. 1997 by default; see viscosity.hpp) + surface tension and adhesion (Akinci
+/// et al. 2013, off unless a material pair or material sets them). Returns the largest
+/// tension acceleration, m/s² (0 when off), for explicitForceLimits().
+inline float addNonPressureForces(StepContext& ctx, std::vector<glm::vec3>& accel) {
     accel.assign(ctx.particles.size(), ctx.gravity);
     addViscosity(ctx, accel);
+    return addSurfaceTension(ctx, accel);
 }
 
 /// Largest kinematic viscosity μ/ρ0 the model uses, m²/s (for the viscous dt limit).
 inline float maxKinematicViscosity(const StepContext& ctx) { return tide::maxKinematicViscosity(ctx); }
+
+/// The solver's settings with maxDt lowered to the explicit non-pressure forces' limits, never
+/// below the user's floor minDt: viscosity and dye diffusion 0.125 s²/ν, surface tension
+/// forceNumber √(s/a) (surfaceTensionTimeStep). For the incompressible solvers, whose CFL
+/// step does not see forces.
+inline SolverDef explicitForceLimits(const StepContext& ctx, float maxTensionAccel) {
+    SolverDef limits = ctx.solver;
+    const float nu = tide::maxKinematicViscosity(ctx);
+    if (nu > 0.0f)
+        limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, 0.125f * ctx.particleSpacing * ctx.particleSpacing / nu));
+    if (maxTensionAccel > 0.0f)
+        limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, static_cast<float>(surfaceTensionTimeStep(ctx, maxTensionAccel))));
+    return limits;
+}
 
 /// Largest particle speed, m/s.
 inline float maxSpeed(const StepContext& ctx) {

@@ -19,7 +19,8 @@ double WcsphBecker2007::step(StepContext& ctx) {
                                             ctx.soundSpeed, true);
     });
     ctx.lap(Phase::Density);
-    sph::addGravityAndViscosity(ctx, accel_);
+    // Tension's force limit is in stableTimeStep's criterion on the total acceleration.
+    sph::addNonPressureForces(ctx, accel_);
     ctx.lap(Phase::NonPressureForces);
     // Walls take the pressure of the fluid around them, extrapolated hydrostatically.
     kappa_.resize(n);
