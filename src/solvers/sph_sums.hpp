@@ -48,12 +48,13 @@ inline void addGravityAndViscosity(StepContext& ctx, std::vector<glm::vec3>& acc
 /// Largest kinematic viscosity μ/ρ0 the model uses, m²/s (for the viscous dt limit).
 inline float maxKinematicViscosity(const StepContext& ctx) { return tide::maxKinematicViscosity(ctx); }
 
-/// Largest particle speed, m/s.
+/// Largest speed of a fluid particle or a moving boundary particle, m/s: the CFL step must
+/// not let a fast paddle or obstacle pass a particle spacing in one step.
 inline float maxSpeed(const StepContext& ctx) {
     const ParticleStore& p = ctx.particles;
-    return std::sqrt(parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) {
+    return std::max(std::sqrt(parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.velocity[i], p.velocity[i]);
-    }, 0.0f));
+    }, 0.0f)), ctx.boundary.maxSpeed);
 }
 
 }  // namespace tide::sph
