@@ -8,8 +8,6 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
-
 #include <gtest/gtest.h>
 
 #include <glm/geometric.hpp>
@@ -19,6 +17,7 @@
 #include <tide/world.hpp>
 
 #include "boundary/rigid_motion.hpp"
+#include "cli_support.hpp"
 #include "testing/scenarios.hpp"
 
 namespace {
@@ -26,17 +25,16 @@ namespace {
 using namespace tide;
 namespace fs = std::filesystem;
 
-fs::path scratchDir() {
-    const fs::path dir = fs::temp_directory_path() / ("tide_moving_obstacles_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
+/// This process's scratch folder, and a file written into it.
+const fs::path& scratchDir() {
+    static const fs::path dir = [] {
+        const fs::path d = tide::testing::scratch("moving_obstacles");
+        fs::create_directories(d);
+        return d;
+    }();
     return dir;
 }
-
-fs::path writeFile(const std::string& name, const std::string& text) {
-    const fs::path file = scratchDir() / name;
-    std::ofstream(file) << text;
-    return file;
-}
+void writeFile(const std::string& name, const std::string& text) { std::ofstream(scratchDir() / name) << text; }
 
 /// Checks, at times spread over the motion, that the velocity and acceleration of material
 /// points are the centred differences of their positions and velocities (step 1e-4 s).

@@ -59,6 +59,7 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
     // within minSeparation of a point lies in the 3×3×3 cells around it. Moving particles
     // are elsewhere soon: fixed points are checked against fixed particles only.
     std::vector<std::uint8_t> keep(points.size(), 1);
+    movable.resize(position.size(), 0);  // positions set by hand are fixed
     if (!position.empty()) {
         const auto sorted = grid.sortedParticles();
         const float limit2 = minSeparation * minSeparation;

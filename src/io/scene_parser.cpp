@@ -150,6 +150,15 @@ public:
         return obj.at(key).get<bool>();
     }
 
+    /// The "type" of an entry that must be an object with one (an obstacle, a motion).
+    std::optional<std::string> typeOf(const json& j, const std::string& path) {
+        if (!j.is_object()) {
+            fail(path, "must be an object, got " + show(j));
+            return std::nullopt;
+        }
+        return string(j, "type", path, true);
+    }
+
     /// The array at key (empty when absent); flags a non-array.
     const json& array(const json& obj, const char* key, const std::string& path, bool required) {
         static const json empty = json::array();
@@ -319,17 +328,18 @@ std::optional<glm::vec3> readMeshScale(Reader& r, const json& j, const std::stri
     return std::nullopt;
 }
 
+/// A file as the scene names it, and where that led when it differs: "a.csv (scenes/a.csv)".
+std::string shownFile(const std::string& named, const std::filesystem::path& resolved) {
+    return resolved.string() == named ? named : named + " (" + resolved.string() + ")";
+}
+
 const std::vector<std::string> kMotionTypes{"translation", "rotation", "csv"};
 
 /// An obstacle's "motion": a translation, a rotation or a CSV time series (files relative to
 /// `baseDirectory`, lengths scaled by `scale`).
 std::optional<MotionDef> readMotion(Reader& r, const json& j, const std::string& path, float scale,
                                     const std::filesystem::path& baseDirectory) {
-    if (!j.is_object()) {
-        r.fail(path, "must be an object, got " + show(j));
-        return std::nullopt;
-    }
-    const auto type = r.string(j, "type", path, true);
+    const auto type = r.typeOf(j, path);
     if (!type) return std::nullopt;
     MotionDef m;
     const std::size_t problemsBefore = r.problems.size();
@@ -382,8 +392,7 @@ std::optional<MotionDef> readMotion(Reader& r, const json& j, const std::string&
                 r.fail(path, *file + " has no angle column: \"axis\" and \"center\" would not be used");
             }
         } catch (const MotionTableError& e) {
-            const std::string shown = resolved.string() == *file ? *file : *file + " (" + resolved.string() + ")";
-            r.fail(join(path, "file"), shown + ": " + e.problem);
+            r.fail(join(path, "file"), shownFile(*file, resolved) + ": " + e.problem);
         }
     } else {
         std::string list;
@@ -398,11 +407,7 @@ std::optional<MotionDef> readMotion(Reader& r, const json& j, const std::string&
 /// One entry of "obstacles"; lengths scaled by `scale`, mesh files relative to `baseDirectory`.
 std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::string& path, float scale,
                                         const std::filesystem::path& baseDirectory) {
-    if (!j.is_object()) {
-        r.fail(path, "must be an object, got " + show(j));
-        return std::nullopt;
-    }
-    const auto type = r.string(j, "type", path, true);
+    const auto type = r.typeOf(j, path);
     if (!type) return std::nullopt;
     ObstacleDef o;
     if (*type == "box") {
@@ -464,8 +469,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         try {
             o.mesh = loadMesh(resolved, placement);
         } catch (const MeshError& e) {
-            const std::string shown = resolved.string() == *file ? *file : *file + " (" + resolved.string() + ")";
-            r.fail(join(path, "file"), shown + ": " + e.problem);
+            r.fail(join(path, "file"), shownFile(*file, resolved) + ": " + e.problem);
             return std::nullopt;
         }
         o.shape = ObstacleDef::Shape::Mesh;
