@@ -87,6 +87,12 @@ TEST(Checkpoint, EmitterAndWaveMakerResumeBitIdentically) {
     expectResumesIdentically(flume, 15, 15);
 }
 
+TEST(Checkpoint, MovingObstaclesResumeBitIdentically) {
+    // Their motion is a function of time: the restored World places them where they were.
+    expectResumesIdentically([] { return scenarios::pushedPlate(0.02f, 0.8f, 0.1f, 0.2f, 2); }, 15, 15);
+    expectResumesIdentically([] { return scenarios::spinningCylinder(0.02f, 0.2f, 0.04f, 3.0f, 1.0f, 2, "pcisph"); }, 12, 12);
+}
+
 TEST(Checkpoint, EveryFlippedByteAndEveryTruncationIsRefused) {
     World world = scenarios::damBreak(0.04f, 1, 0.4f, 0.12f, 0.12f, 25, "dfsph");
     world.step(1.0);

@@ -297,6 +297,18 @@ TEST(Cli, ShippedObstacleDamBreakLosesNoParticle) {
     expectFullStats(out);  // particles_lost 0 at every frame
 }
 
+TEST(Cli, ShippedStirredTankListsItsMotionAndLosesNoParticle) {
+    const fs::path out = scratch("stirred_tank_out");
+    const std::string scene = std::string(TIDE_SCENES_DIR) + "/stirred_tank.json";
+    const Result validate = run(kTide + " validate " + scene);
+    EXPECT_EQ(validate.exit, 0) << validate.output;
+    EXPECT_NE(validate.output.find("moving   obstacles[0]: rotation about [0, 1, 0] through [0.2, 0, 0.2] m, 4 rad/s"),
+              std::string::npos) << validate.output;
+    const Result r = run(kTide + " run " + scene + " --quiet --end-time 0.1 --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    expectFullStats(out);  // particles_lost 0 at every frame
+}
+
 TEST(Cli, DivergenceExitsOneAndKeepsEarlierFrames) {
     // A time step forced 40× beyond the viscous stability limit: the fluid collapses.
     const std::string exploding = replace(smallScene(R"(, "solver": {"min_dt": 0.01, "max_dt": 0.01})"),

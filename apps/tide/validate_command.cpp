@@ -1,4 +1,5 @@
 // `tide validate`: check a scene and say what it would simulate.
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -15,6 +16,59 @@ void reportSceneProblems(const std::string& file, const std::vector<std::string>
         else std::fprintf(stderr, "%s: %s\n", file.c_str(), problem.c_str());
     }
 }
+
+namespace {
+
+std::string vec(const glm::vec3& v) {
+    char text[96];
+    std::snprintf(text, sizeof text, "[%g, %g, %g]", v.x, v.y, v.z);
+    return text;
+}
+
+/// "translation, velocity [0.2, 0, 0] m/s, from 0 s, ramp 0.2 s" and the like.
+std::string describeMotion(const MotionDef& m) {
+    char text[256];
+    std::string out;
+    switch (m.type) {
+        case MotionDef::Type::None: return "fixed";
+        case MotionDef::Type::Translation:
+            out = "translation";
+            if (m.velocity != glm::vec3(0.0f)) out += ", velocity " + vec(m.velocity) + " m/s";
+            if (m.amplitude != glm::vec3(0.0f)) {
+                std::snprintf(text, sizeof text, ", amplitude %s m, period %g s", vec(m.amplitude).c_str(), m.period);
+                out += text;
+            }
+            break;
+        case MotionDef::Type::Rotation:
+            out = "rotation about " + vec(m.axis) + " through " + vec(m.center) + " m";
+            if (m.angularVelocity != 0.0f) {
+                std::snprintf(text, sizeof text, ", %g rad/s", m.angularVelocity);
+                out += text;
+            }
+            if (m.angularAmplitude != 0.0f) {
+                std::snprintf(text, sizeof text, ", amplitude %g rad, period %g s", m.angularAmplitude, m.period);
+                out += text;
+            }
+            break;
+        case MotionDef::Type::Table: {
+            const bool turns = std::any_of(m.keys.begin(), m.keys.end(), [](const MotionKey& k) { return k.angle != 0.0f; });
+            std::snprintf(text, sizeof text, "csv table, %zu rows over %g..%g s", m.keys.size(), m.keys.front().time,
+                          m.keys.back().time);
+            out = text;
+            if (turns) out += ", turning about " + vec(m.axis) + " through " + vec(m.center) + " m";
+            break;
+        }
+    }
+    std::snprintf(text, sizeof text, ", from %g s", m.startTime);
+    out += text;
+    if (m.rampTime > 0.0f && m.type != MotionDef::Type::Table) {
+        std::snprintf(text, sizeof text, ", ramp %g s", m.rampTime);
+        out += text;
+    }
+    return out;
+}
+
+}  // namespace
 
 int validateCommand(const std::string& file) {
     io::Scene scene;
@@ -58,6 +112,9 @@ int validateCommand(const std::string& file) {
     }
     if (!shapes.empty()) shapes += ")";
     std::printf("obstacles  %zu%s, emitters %zu\n", scene.obstacles.size(), shapes.c_str(), scene.emitters.size());
+    for (std::size_t k = 0; k < scene.obstacles.size(); ++k)
+        if (scene.obstacles[k].motion.type != MotionDef::Type::None)
+            std::printf("  moving   obstacles[%zu]: %s\n", k, describeMotion(scene.obstacles[k].motion).c_str());
     for (const WaveMakerDef& wm : scene.waveMakers) {
         const char* type = wm.type == WaveMakerDef::Type::Flap ? "flap" : "piston";
         if (wm.spectrum.type == WaveSpectrumDef::Type::None)

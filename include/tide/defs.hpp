@@ -7,6 +7,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -116,8 +117,46 @@ struct WorldDef {
     SolverDef solver;
 };
 
-/// A fixed solid the fluid flows around, sampled as boundary particles. Which fields
-/// matter depends on the shape; World::addObstacle validates them.
+/// One row of a motion table (MotionDef::Type::Table): the obstacle's pose at `time`.
+struct MotionKey {
+    double time = 0.0;       ///< s (shifted by MotionDef::startTime)
+    glm::vec3 offset{0.0f};  ///< displacement from the rest pose, m
+    float angle = 0.0f;      ///< rotation about MotionDef::axis through MotionDef::center, rad
+};
+
+/// A prescribed rigid motion of an obstacle (ObstacleDef::motion). A point x0 of the obstacle
+/// at rest is at  c + d(t) + R(θ(t)) (x0 − c)  at time t: R the rotation by θ about `axis`
+/// (right-hand rule) through the pivot c = `center`, d the displacement. With τ = t −
+/// startTime (nothing moves while τ < 0) and the ramp r(τ) = ½(1 − cos(π τ/rampTime)) (1
+/// after rampTime):
+///   Translation: d = velocity ∫r dτ + amplitude r(τ) sin(2π τ/period), θ = 0;
+///   Rotation:    θ = angularVelocity ∫r dτ + angularAmplitude r(τ) sin(2π τ/period), d = 0;
+///   Table:       d and θ interpolated in `keys` at τ (cubic Hermite, Catmull–Rom tangents,
+///                zero velocity at the first and last row; the first row is held before it,
+///                the last one after it).
+struct MotionDef {
+    enum class Type {
+        None,         ///< the obstacle is fixed
+        Translation,  ///< steady and/or oscillating translation
+        Rotation,     ///< steady and/or oscillating rotation about an axis
+        Table,        ///< a time series of displacement and angle (a CSV file in scenes)
+    };
+    Type type = Type::None;
+    glm::vec3 velocity{0.0f};        ///< Translation: steady velocity, m/s
+    glm::vec3 amplitude{0.0f};       ///< Translation: oscillation amplitude per axis, m
+    glm::vec3 axis{0.0f, 1.0f, 0.0f};  ///< Rotation, Table: rotation axis (normalised when added)
+    glm::vec3 center{0.0f};          ///< Rotation, Table: the pivot, a point on the axis at rest, m
+    float angularVelocity = 0.0f;    ///< Rotation: steady rate, rad/s
+    float angularAmplitude = 0.0f;   ///< Rotation: oscillation amplitude, rad
+    float period = 0.0f;             ///< oscillation period, s (> 0 when an amplitude is set)
+    double startTime = 0.0;          ///< s; the obstacle rests in its rest pose before
+    float rampTime = 0.0f;           ///< s; Translation, Rotation: smooth start (0: impulsive)
+    std::vector<MotionKey> keys;     ///< Table: rows at strictly increasing times
+};
+
+/// A solid the fluid flows around, sampled as boundary particles: fixed, or moving by a
+/// prescribed `motion`. Which fields matter depends on the shape; World::addObstacle
+/// validates them.
 struct ObstacleDef {
     enum class Shape {
         Box,       ///< axis-aligned box `min`..`max`
@@ -136,6 +175,8 @@ struct ObstacleDef {
     glm::vec3 point{0.0f};               ///< a point on the plane, m
     glm::vec3 normal{0.0f, 1.0f, 0.0f};  ///< plane normal, pointing out of the solid (normalised when added)
     std::shared_ptr<const TriangleMesh> mesh;  ///< the mesh (shared, immutable), in metres
+    /// How it moves (not a plane); the fields above describe its rest pose.
+    MotionDef motion;
 };
 
 /// A box filled with particles on a cubic lattice.

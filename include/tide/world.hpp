@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
+
 #include <tide/defs.hpp>
 #include <tide/particles.hpp>
 
@@ -103,6 +105,13 @@ public:
     Divergence divergence;
 };
 
+/// Where an obstacle is: the point x0 of its definition (its rest pose) is at
+/// rotation · x0 + translation. Fixed obstacles: the identity.
+struct ObstaclePose {
+    glm::mat3 rotation{1.0f};
+    glm::vec3 translation{0.0f};  ///< m
+};
+
 /// What an emitter has accumulated during a run (its EmitterDef is the scene's).
 struct EmitterProgress {
     bool active = true;
@@ -110,8 +119,9 @@ struct EmitterProgress {
 };
 
 /// Everything of a World that evolves while it runs: restoring it into a World built from the
-/// same definitions continues the run bit for bit (a checkpoint). Wave makers need nothing
-/// here: their motion is a function of time (random phases come from their seed).
+/// same definitions continues the run bit for bit (a checkpoint). Wave makers and moving
+/// obstacles need nothing here: their motion is a function of time (random phases come from
+/// their seed).
 struct WorldState {
     double time = 0.0;                    ///< s
     float soundSpeed = 0.0f;              ///< m/s, 0 until the first step resolves it
@@ -164,11 +174,16 @@ public:
     /// Number of particles addBlock(block) would add.
     [[nodiscard]] std::uint32_t countBlock(const BlockDef& block) const;
 
-    /// Add a fixed obstacle (sampled as boundary particles). Add obstacles before blocks:
-    /// blocks leave out the lattice points that fall inside an obstacle.
+    /// Add an obstacle (sampled as boundary particles), fixed or moving by its `motion`. Add
+    /// obstacles before blocks: blocks leave out the lattice points that fall inside an
+    /// obstacle (where it is at the time of adding). A moving obstacle is sampled where it
+    /// lies inside the container at rest. Throws std::invalid_argument naming the field at fault.
     void addObstacle(const ObstacleDef& obstacle);
+    /// The obstacles as defined (moving ones in their rest pose; see obstaclePose()).
     [[nodiscard]] const std::vector<ObstacleDef>& obstacles() const;
-    /// Particles outside the container or inside an obstacle: should always be 0.
+    /// Where obstacle `index` is at time t (its motion's pose; the identity when fixed).
+    [[nodiscard]] ObstaclePose obstaclePose(std::uint32_t index, double t) const;
+    /// Particles outside the container or inside an obstacle (moving ones where they are now): should always be 0.
     [[nodiscard]] std::uint32_t countEscapedParticles() const;
 
     /// Add a wave paddle (a moving boundary, see WaveMakerDef). Add it before blocks: blocks

@@ -49,14 +49,17 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
     volume.assign(position.size(), particleVolume);
     velocity.assign(position.size(), glm::vec3(0.0f));
     acceleration.assign(position.size(), glm::vec3(0.0f));
+    movable.assign(position.size(), 0);
     grid.build(position, searchRadius, threads, periodic);
 }
 
 std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float particleVolume, float minSeparation,
                                      float searchRadius, int threads) {
     // The grid's cells are at least searchRadius > minSeparation wide, so any particle
-    // within minSeparation of a point lies in the 3×3×3 cells around it.
+    // within minSeparation of a point lies in the 3×3×3 cells around it. Moving particles
+    // are elsewhere soon: fixed points are checked against fixed particles only.
     std::vector<std::uint8_t> keep(points.size(), 1);
+    movable.resize(position.size(), 0);  // positions set by hand are fixed
     if (!position.empty()) {
         const auto sorted = grid.sortedParticles();
         const float limit2 = minSeparation * minSeparation;
@@ -64,6 +67,7 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
             const glm::vec3 x = points[i];
             grid.forEachNeighborRun(grid.cellOf(x), [&](std::uint32_t begin, std::uint32_t end) {
                 for (std::uint32_t k = begin; k < end && keep[i]; ++k) {
+                    if (movable[sorted[k]]) continue;
                     const glm::vec3 d = periodic.delta(position[sorted[k]], x);
                     if (glm::dot(d, d) < limit2) keep[i] = 0;
                 }
@@ -76,8 +80,20 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
     volume.resize(position.size(), particleVolume);
     velocity.resize(position.size(), glm::vec3(0.0f));
     acceleration.resize(position.size(), glm::vec3(0.0f));
+    movable.resize(position.size(), 0);
     grid.build(position, searchRadius, threads, periodic);
     return static_cast<std::uint32_t>(position.size() - before);
+}
+
+std::uint32_t BoundaryParticles::addMoving(std::span<const glm::vec3> points, float particleVolume) {
+    const auto begin = static_cast<std::uint32_t>(position.size());
+    position.insert(position.end(), points.begin(), points.end());
+    volume.resize(position.size(), particleVolume);
+    velocity.resize(position.size(), glm::vec3(0.0f));
+    acceleration.resize(position.size(), glm::vec3(0.0f));
+    movable.resize(position.size(), 1);
+    moving = true;
+    return begin;
 }
 
 }  // namespace tide

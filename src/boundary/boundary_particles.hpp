@@ -42,6 +42,11 @@ public:
     std::uint32_t add(std::span<const glm::vec3> points, float volume, float minSeparation, float searchRadius,
                       int threads);
 
+    /// Add the particles of a moving boundary (a paddle, a moving obstacle), each of `volume`
+    /// m³, all of them: they do not coincide with the fixed ones for long. Their positions are
+    /// the World's to set every step. Returns the index of the first one.
+    std::uint32_t addMoving(std::span<const glm::vec3> points, float volume);
+
     [[nodiscard]] std::uint32_t size() const { return static_cast<std::uint32_t>(position.size()); }
 
     std::vector<glm::vec3> position;  ///< m
@@ -51,6 +56,8 @@ public:
     std::vector<glm::vec3> velocity;      ///< v_b, m/s
     std::vector<glm::vec3> acceleration;  ///< a_b, m/s²
     bool moving = false;                  ///< whether any boundary particle moves
+    std::vector<std::uint8_t> movable;    ///< 1 for particles of moving boundaries
+    float maxSpeed = 0.0f;                ///< largest |v_b|, m/s (set with the velocities)
     UniformGrid grid;                 ///< rebuilt whenever boundary particles move
     PeriodicBox periodic;             ///< the domain's periodic axes (set before sampling): the grid wraps there
 };

@@ -92,6 +92,12 @@ float signedDistance(const ObstacleDef& o, const glm::vec3& x, glm::vec3* normal
     return std::numeric_limits<float>::infinity();
 }
 
+float signedDistance(const ObstacleDef& o, const RigidPose& pose, const glm::vec3& x, glm::vec3* normal) {
+    const float d = signedDistance(o, pose.toRest(x), normal);
+    if (normal) *normal = pose.rotate(*normal);
+    return d;
+}
+
 void obstacleBounds(const ObstacleDef& o, const glm::vec3& clipMin, const glm::vec3& clipMax, glm::vec3& lo,
                     glm::vec3& hi) {
     switch (o.shape) {
@@ -174,6 +180,24 @@ void projectOutOfObstacles(std::span<const ObstacleDef> obstacles, ParticleStore
                 if (vn < 0.0f) particles.velocity[i] -= vn * normal;
             }
         }
+    });
+}
+
+void projectOutOfMovingObstacle(const ObstacleDef& o, const RigidPose& pose, ParticleStore& particles, float margin,
+                                int threads) {
+    parallelFor(particles.size(), threads, [&](std::uint32_t i) {
+        glm::vec3& x = particles.position[i];
+        const glm::vec3 x0 = pose.toRest(x);
+        if (o.shape == ObstacleDef::Shape::Mesh && fartherThan(x0, o.mesh->boundsMin(), o.mesh->boundsMax(), margin))
+            return;
+        glm::vec3 normal;
+        const float d = signedDistance(o, x0, &normal);
+        if (d >= margin) return;
+        normal = pose.rotate(normal);
+        x += (margin - d) * normal;
+        glm::vec3& v = particles.velocity[i];
+        const float into = glm::dot(v - pose.velocityAt(x), normal);
+        if (into < 0.0f) v -= into * normal;
     });
 }
 

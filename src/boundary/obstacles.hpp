@@ -1,11 +1,15 @@
 #pragma once
 /// \file
-/// Fixed obstacles: boxes, spheres, capped cylinders, half-spaces (planes) and closed
-/// triangle meshes. Each is sampled like the container walls: the fluid's own lattice
-/// continued inside the solid, kept only within a kernel support of its surface, so a
-/// particle resting on it has rest density. After integration, particles that got inside
-/// are projected back out through the nearest surface (half a spacing outside), losing
-/// their inward normal speed.
+/// Obstacles: boxes, spheres, capped cylinders, half-spaces (planes) and closed triangle
+/// meshes. Each is sampled like the container walls: the fluid's own lattice continued
+/// inside the solid, kept only within a kernel support of its surface, so a particle resting
+/// on it has rest density. After integration, particles that got inside are projected back
+/// out through the nearest surface (a margin outside), losing their normal speed into it.
+///
+/// A moving obstacle (ObstacleDef::motion) keeps its shape in its rest frame: a particle is
+/// tested at the rest-frame point RigidPose::toRest(x), pushed out along the rotated normal,
+/// and loses only its normal speed into the obstacle relative to the obstacle's own velocity
+/// there, so a pushing obstacle carries the fluid in front of it along.
 
 #include <span>
 #include <vector>
@@ -15,11 +19,16 @@
 #include <tide/defs.hpp>
 #include <tide/particles.hpp>
 
+#include "boundary/rigid_motion.hpp"
+
 namespace tide {
 
 /// Signed distance from x to the obstacle's surface (negative inside) and the outward
 /// normal (the direction in which the distance grows). Exact for every shape.
 float signedDistance(const ObstacleDef& obstacle, const glm::vec3& x, glm::vec3* normal = nullptr);
+
+/// The same for an obstacle moved to `pose` (the normal rotated with it).
+float signedDistance(const ObstacleDef& obstacle, const RigidPose& pose, const glm::vec3& x, glm::vec3* normal = nullptr);
 
 /// The obstacle's axis-aligned bounding box, clipped to [clipMin, clipMax] (a plane fills the clip box).
 void obstacleBounds(const ObstacleDef& obstacle, const glm::vec3& clipMin, const glm::vec3& clipMax, glm::vec3& lo,
@@ -32,5 +41,10 @@ std::vector<glm::vec3> sampleObstacle(const ObstacleDef& obstacle, const glm::ve
 
 /// Push particles that entered any obstacle back out, `margin` outside its surface.
 void projectOutOfObstacles(std::span<const ObstacleDef> obstacles, ParticleStore& particles, float margin, int threads);
+
+/// Push particles that entered an obstacle at `pose` back out, `margin` outside its surface,
+/// without velocity into it relative to its own.
+void projectOutOfMovingObstacle(const ObstacleDef& obstacle, const RigidPose& pose, ParticleStore& particles,
+                                float margin, int threads);
 
 }  // namespace tide

@@ -12,6 +12,7 @@
 #include "boundary/boundary_particles.hpp"
 #include "boundary/damping_zone.hpp"
 #include "boundary/obstacles.hpp"
+#include "boundary/rigid_motion.hpp"
 #include "boundary/wall_box.hpp"
 #include "core/divergence_guard.hpp"
 #include "core/field_sampling.hpp"
@@ -116,7 +117,16 @@ struct World::Impl {
     NeighborList boundaryNeighbors;       ///< boundary particles near each fluid particle
     NeighborList boundaryFluidNeighbors;  ///< fluid particles near each boundary particle
     std::vector<EmitterState> emitters;
-    std::vector<ObstacleDef> obstacles;
+    std::vector<ObstacleDef> obstacles;        ///< all of them, as defined
+    std::vector<ObstacleDef> fixedObstacles;   ///< those without motion
+    /// A moving obstacle (obstacles[index]) and its boundary particles [begin, begin + rest.size()).
+    struct Mover {
+        std::uint32_t index;
+        RigidMotion motion;
+        std::uint32_t begin;
+        std::vector<glm::vec3> rest;
+    };
+    std::vector<Mover> movers;
     /// A wave paddle and its boundary particles [begin, begin + rest.size()).
     struct Paddle {
         WaveMaker maker;
@@ -162,22 +172,39 @@ struct World::Impl {
 
     /// Whether a lattice point is clear of every obstacle (by the half spacing a particle fills).
     [[nodiscard]] bool clearOfObstacles(const glm::vec3& x) const {
-        for (const ObstacleDef& o : obstacles)
+        for (const ObstacleDef& o : fixedObstacles)
             if (signedDistance(o, x) < 0.499f * def.particleSpacing) return false;
+        for (const Mover& m : movers)
+            if (signedDistance(obstacles[m.index], m.motion.pose(time), x) < 0.499f * def.particleSpacing) return false;
         for (const Paddle& paddle : paddles)
             if (paddle.maker.distanceInFront(time, x) < 0.499f * def.particleSpacing) return false;
         return true;
     }
 
-    /// Puts the paddles' boundary particles where their motion has them at time t.
+    /// Puts the boundary particles of paddles and moving obstacles where their motion has
+    /// them at time t, with their velocities and accelerations.
     void moveBoundaries(double t) {
-        if (paddles.empty()) return;
+        if (paddles.empty() && movers.empty()) return;
         for (const Paddle& paddle : paddles) {
             const std::size_t n = paddle.rest.size();
             paddle.maker.place(t, paddle.rest, std::span(boundary.position).subspan(paddle.begin, n),
                                std::span(boundary.velocity).subspan(paddle.begin, n),
                                std::span(boundary.acceleration).subspan(paddle.begin, n));
         }
+        for (const Mover& m : movers) {
+            const RigidPose pose = m.motion.pose(t);
+            parallelFor(static_cast<std::uint32_t>(m.rest.size()), threads, [&](std::uint32_t k) {
+                const std::uint32_t b = m.begin + k;
+                const glm::vec3 x = pose.place(m.rest[k]);
+                boundary.position[b] = periodic.wrap(x);
+                boundary.velocity[b] = pose.velocityAt(x);
+                boundary.acceleration[b] = pose.accelerationAt(x);
+            });
+        }
+        float fastest2 = 0.0f;
+        for (std::size_t b = 0; b < boundary.velocity.size(); ++b)
+            if (boundary.movable[b]) fastest2 = std::max(fastest2, glm::dot(boundary.velocity[b], boundary.velocity[b]));
+        boundary.maxSpeed = std::sqrt(fastest2);
         boundary.grid.build(boundary.position, h, threads, periodic);
     }
 
@@ -406,10 +433,15 @@ void World::addObstacle(const ObstacleDef& def) {
             break;
         default: throw std::invalid_argument("obstacle.shape: unknown shape");
     }
+    obstacle.motion = validatedMotion(obstacle.motion, "obstacle.motion");
+    const bool moves = obstacle.motion.type != MotionDef::Type::None;
+    if (moves && obstacle.shape == ObstacleDef::Shape::Plane)
+        throw std::invalid_argument("obstacle.motion: a plane cannot move (it is sampled only inside the container); use a box");
     // Sample up to the outside of the wall shell (a plane is infinite), or across one period
     // of a periodic axis; boundary particles that coincide with earlier ones (the shell, an
     // overlapping obstacle) are not repeated.
-    const float shell = std::ceil(w.h / w.def.particleSpacing) * w.def.particleSpacing;
+    // A moving obstacle only inside the walls: it must not double the shell where they meet.
+    const float shell = moves && w.def.walls ? 0.0f : std::ceil(w.h / w.def.particleSpacing) * w.def.particleSpacing;
     glm::vec3 clipMin = w.def.domainMin - shell, clipMax = w.def.domainMax + shell;
     for (int axis = 0; axis < 3; ++axis)
         if (w.periodic.periodic(axis)) {
@@ -418,11 +450,30 @@ void World::addObstacle(const ObstacleDef& def) {
         }
     auto points = sampleObstacle(obstacle, w.def.domainMin, w.def.particleSpacing, w.h, clipMin, clipMax, w.threads);
     for (glm::vec3& x : points) x = w.periodic.wrap(x);
-    w.boundary.add(points, 1.0f / w.latticeSum, 0.5f * w.def.particleSpacing, w.h, w.threads);
+    const auto index = static_cast<std::uint32_t>(w.obstacles.size());
     w.obstacles.push_back(obstacle);
+    if (!moves) {
+        w.boundary.add(points, 1.0f / w.latticeSum, 0.5f * w.def.particleSpacing, w.h, w.threads);
+        w.fixedObstacles.push_back(obstacle);
+        return;
+    }
+    const std::uint32_t begin = w.boundary.addMoving(points, 1.0f / w.latticeSum);
+    w.movers.push_back({index, RigidMotion(obstacle.motion), begin, std::move(points)});
+    w.moveBoundaries(w.time);
 }
 
 const std::vector<ObstacleDef>& World::obstacles() const { return impl_->obstacles; }
+
+ObstaclePose World::obstaclePose(std::uint32_t index, double t) const {
+    const Impl& w = *impl_;
+    if (index >= w.obstacles.size()) throw std::invalid_argument("obstacle: no obstacle " + std::to_string(index));
+    for (const Impl::Mover& m : w.movers)
+        if (m.index == index) {
+            const RigidPose pose = m.motion.pose(t);
+            return {pose.rotation, pose.pivot - pose.rotation * pose.center};
+        }
+    return {};
+}
 
 std::uint32_t World::countEscapedParticles() const {
     const Impl& w = *impl_;
@@ -432,7 +483,8 @@ std::uint32_t World::countEscapedParticles() const {
         for (int axis = 0; axis < 3 && w.def.walls; ++axis)  // a periodic axis has no outside
             out = out || (!w.periodic.periodic(axis) &&
                           !(x[axis] >= w.def.domainMin[axis] && x[axis] <= w.def.domainMax[axis]));
-        for (const ObstacleDef& o : w.obstacles) out = out || signedDistance(o, x) < 0.0f;
+        for (const ObstacleDef& o : w.fixedObstacles) out = out || signedDistance(o, x) < 0.0f;
+        for (const Impl::Mover& m : w.movers) out = out || signedDistance(w.obstacles[m.index], m.motion.pose(w.time), x) < 0.0f;
         for (const Impl::Paddle& paddle : w.paddles) out = out || paddle.maker.distanceInFront(w.time, x) < 0.0f;
         escaped += out;
     }
@@ -475,13 +527,7 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     WaveMaker maker(def, d.domainMin.y, g);
     const int layers = static_cast<int>(std::ceil(w.h / d.particleSpacing));
     std::vector<glm::vec3> rest = maker.sample(d.domainMin, d.domainMax, d.particleSpacing, layers);
-    const auto begin = static_cast<std::uint32_t>(w.boundary.position.size());
-    BoundaryParticles& b = w.boundary;
-    b.position.insert(b.position.end(), rest.begin(), rest.end());
-    b.volume.resize(b.position.size(), 1.0f / w.latticeSum);
-    b.velocity.resize(b.position.size(), glm::vec3(0.0f));
-    b.acceleration.resize(b.position.size(), glm::vec3(0.0f));
-    b.moving = true;
+    const std::uint32_t begin = w.boundary.addMoving(rest, 1.0f / w.latticeSum);
     w.paddles.push_back({std::move(maker), begin, std::move(rest)});
     w.moveBoundaries(w.time);
 }
@@ -568,6 +614,9 @@ double World::step(double maxDt) {
     w.stats.lastPressureIterations = ctx.pressureIterations;
     w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);
     const float margin = w.solver->wallMargin() * w.def.particleSpacing;
+    // Moving obstacles first: where one squeezes a particle against a wall, the wall wins.
+    for (const Impl::Mover& m : w.movers)
+        projectOutOfMovingObstacle(w.obstacles[m.index], m.motion.pose(w.time + dt), w.particles, margin, w.threads);
     if (w.def.walls) {
         // No walls across a periodic axis.
         constexpr float inf = std::numeric_limits<float>::infinity();
@@ -580,7 +629,7 @@ double World::step(double maxDt) {
         const WallBox walls{lo, hi, margin, w.def.wallRestitution};
         walls.enforce(w.particles, w.threads);
     }
-    projectOutOfObstacles(w.obstacles, w.particles, margin, w.threads);
+    projectOutOfObstacles(w.fixedObstacles, w.particles, margin, w.threads);
     for (const Impl::Paddle& paddle : w.paddles) paddle.maker.project(w.time + dt, w.particles, margin, w.threads);
     applyDampingZones(w.dampingZones, w.particles, dt, w.threads);
     if (w.periodic.any)

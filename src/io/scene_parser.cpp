@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include <tide/io/mesh.hpp>
+#include <tide/io/motion_table.hpp>
 #include <tide/io/scene.hpp>
 
 namespace tide::io {
@@ -147,6 +148,15 @@ public:
             return std::nullopt;
         }
         return obj.at(key).get<bool>();
+    }
+
+    /// The "type" of an entry that must be an object with one (an obstacle, a motion).
+    std::optional<std::string> typeOf(const json& j, const std::string& path) {
+        if (!j.is_object()) {
+            fail(path, "must be an object, got " + show(j));
+            return std::nullopt;
+        }
+        return string(j, "type", path, true);
     }
 
     /// The array at key (empty when absent); flags a non-array.
@@ -392,22 +402,94 @@ std::optional<glm::vec3> readMeshScale(Reader& r, const json& j, const std::stri
     return std::nullopt;
 }
 
+/// A file as the scene names it, and where that led when it differs: "a.csv (scenes/a.csv)".
+std::string shownFile(const std::string& named, const std::filesystem::path& resolved) {
+    return resolved.string() == named ? named : named + " (" + resolved.string() + ")";
+}
+
+const std::vector<std::string> kMotionTypes{"translation", "rotation", "csv"};
+
+/// An obstacle's "motion": a translation, a rotation or a CSV time series (files relative to
+/// `baseDirectory`, lengths scaled by `scale`).
+std::optional<MotionDef> readMotion(Reader& r, const json& j, const std::string& path, float scale,
+                                    const std::filesystem::path& baseDirectory) {
+    const auto type = r.typeOf(j, path);
+    if (!type) return std::nullopt;
+    MotionDef m;
+    const std::size_t problemsBefore = r.problems.size();
+    const auto startAndRamp = [&](bool ramp) {
+        if (auto v = r.number(j, "start_time", path, false, 0.0, 1e7)) m.startTime = *v;
+        if (!ramp) return;
+        if (auto v = r.number(j, "ramp_time", path, false, 0.0, 1e7)) m.rampTime = static_cast<float>(*v);
+    };
+    const auto period = [&](bool needed) {  // of the oscillation, needed with an amplitude
+        if (auto v = r.number(j, "period", path, needed, 0.0, 1e7, true)) m.period = static_cast<float>(*v);
+    };
+    if (*type == "translation") {
+        if (!r.object(j, path, {"type", "velocity", "amplitude", "period", "start_time", "ramp_time"})) return std::nullopt;
+        m.type = MotionDef::Type::Translation;
+        if (auto v = r.vec3(j, "velocity", path, false)) m.velocity = *v * scale;
+        if (auto v = r.vec3(j, "amplitude", path, false)) m.amplitude = *v * scale;
+        if (!j.contains("velocity") && !j.contains("amplitude")) r.fail(path, "needs \"velocity\" or \"amplitude\" (or both)");
+        period(j.contains("amplitude"));
+        startAndRamp(true);
+    } else if (*type == "rotation") {
+        if (!r.object(j, path, {"type", "axis", "center", "angular_velocity", "amplitude", "period", "start_time", "ramp_time"}))
+            return std::nullopt;
+        m.type = MotionDef::Type::Rotation;
+        if (auto a = readDirection(r, j, "axis", path)) m.axis = *a;
+        if (auto c = r.vec3(j, "center", path, true)) m.center = *c * scale;
+        if (auto v = r.number(j, "angular_velocity", path, false, -1e6, 1e6)) m.angularVelocity = static_cast<float>(*v);
+        if (auto v = r.number(j, "amplitude", path, false, -1e6, 1e6)) m.angularAmplitude = static_cast<float>(*v);
+        if (!j.contains("angular_velocity") && !j.contains("amplitude"))
+            r.fail(path, "needs \"angular_velocity\" or \"amplitude\" (or both)");
+        period(j.contains("amplitude"));
+        startAndRamp(true);
+    } else if (*type == "csv") {
+        if (!r.object(j, path, {"type", "file", "axis", "center", "start_time"})) return std::nullopt;
+        m.type = MotionDef::Type::Table;
+        startAndRamp(false);
+        const auto file = r.string(j, "file", path, true);
+        if (!file) return std::nullopt;
+        if (file->empty()) {
+            r.fail(join(path, "file"), "must name a CSV file (time,x,y,z[,angle]), got \"\"");
+            return std::nullopt;
+        }
+        const std::filesystem::path resolved = baseDirectory / *file;
+        try {
+            MotionTable table = readMotionTable(resolved, scale);
+            m.keys = std::move(table.keys);
+            if (table.hasAngle) {
+                if (auto a = readDirection(r, j, "axis", path)) m.axis = *a;
+                if (auto c = r.vec3(j, "center", path, true)) m.center = *c * scale;
+            } else if (j.contains("axis") || j.contains("center")) {
+                r.fail(path, *file + " has no angle column: \"axis\" and \"center\" would not be used");
+            }
+        } catch (const MotionTableError& e) {
+            r.fail(join(path, "file"), shownFile(*file, resolved) + ": " + e.problem);
+        }
+    } else {
+        std::string list;
+        for (const auto& k : kMotionTypes) list += (list.empty() ? "" : ", ") + k;
+        r.fail(join(path, "type"), "\"" + *type + "\" is not one of " + list + suggestion(*type, kMotionTypes));
+        return std::nullopt;
+    }
+    if (r.problems.size() != problemsBefore) return std::nullopt;
+    return m;
+}
+
 /// One entry of "obstacles"; lengths scaled by `scale`, mesh files relative to `baseDirectory`.
 std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::string& path, float scale,
                                         const std::filesystem::path& baseDirectory) {
-    if (!j.is_object()) {
-        r.fail(path, "must be an object, got " + show(j));
-        return std::nullopt;
-    }
-    const auto type = r.string(j, "type", path, true);
+    const auto type = r.typeOf(j, path);
     if (!type) return std::nullopt;
     ObstacleDef o;
     if (*type == "box") {
-        if (!r.object(j, path, {"type", "min", "max"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "min", "max", "motion"})) return std::nullopt;
         if (!readBox(r, j, path, scale, o.min, o.max)) return std::nullopt;
         o.shape = ObstacleDef::Shape::Box;
     } else if (*type == "sphere") {
-        if (!r.object(j, path, {"type", "center", "radius"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "center", "radius", "motion"})) return std::nullopt;
         const auto c = r.vec3(j, "center", path, true);
         const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
         if (!c || !radius) return std::nullopt;
@@ -415,7 +497,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.center = *c * scale;
         o.radius = static_cast<float>(*radius) * scale;
     } else if (*type == "cylinder") {
-        if (!r.object(j, path, {"type", "center", "axis", "radius", "length"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "center", "axis", "radius", "length", "motion"})) return std::nullopt;
         const auto c = r.vec3(j, "center", path, true);
         const auto axis = readDirection(r, j, "axis", path);
         const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
@@ -427,7 +509,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.radius = static_cast<float>(*radius) * scale;
         o.length = static_cast<float>(*length) * scale;
     } else if (*type == "plane") {
-        if (!r.object(j, path, {"type", "point", "normal"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "point", "normal", "motion"})) return std::nullopt;
         const auto point = r.vec3(j, "point", path, true);
         const auto normal = readDirection(r, j, "normal", path);
         if (!point || !normal) return std::nullopt;
@@ -435,7 +517,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.point = *point * scale;
         o.normal = *normal;
     } else if (*type == "mesh") {
-        if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate", "motion"})) return std::nullopt;
         const auto file = r.string(j, "file", path, true);
         MeshPlacement placement;
         const auto meshScale = readMeshScale(r, j, path);
@@ -461,8 +543,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         try {
             o.mesh = loadMesh(resolved, placement);
         } catch (const MeshError& e) {
-            const std::string shown = resolved.string() == *file ? *file : *file + " (" + resolved.string() + ")";
-            r.fail(join(path, "file"), shown + ": " + e.problem);
+            r.fail(join(path, "file"), shownFile(*file, resolved) + ": " + e.problem);
             return std::nullopt;
         }
         o.shape = ObstacleDef::Shape::Mesh;
@@ -470,6 +551,15 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         r.fail(join(path, "type"), "must be \"box\", \"sphere\", \"cylinder\", \"plane\" or \"mesh\", got \"" + *type +
                                        "\"" + suggestion(*type, kObstacleTypes));
         return std::nullopt;
+    }
+    if (j.contains("motion")) {
+        if (o.shape == ObstacleDef::Shape::Plane) {
+            r.fail(join(path, "motion"), "a plane cannot move (it is infinite); use a box");
+            return std::nullopt;
+        }
+        auto motion = readMotion(r, j.at("motion"), join(path, "motion"), scale, baseDirectory);
+        if (!motion) return std::nullopt;
+        o.motion = std::move(*motion);
     }
     return o;
 }

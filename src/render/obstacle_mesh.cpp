@@ -96,9 +96,12 @@ void plane(std::vector<SolidVertex>& out, const ObstacleDef& o, float size) {
 
 }  // namespace
 
-std::vector<SolidVertex> tessellate(const std::vector<ObstacleDef>& obstacles, float planeSize) {
+std::vector<SolidVertex> tessellate(const std::vector<ObstacleDef>& obstacles, float planeSize,
+                                    std::span<const ObstaclePose> poses) {
     std::vector<SolidVertex> out;
-    for (const ObstacleDef& o : obstacles) {
+    for (std::size_t k = 0; k < obstacles.size(); ++k) {
+        const ObstacleDef& o = obstacles[k];
+        const std::size_t first = out.size();
         switch (o.shape) {
             case ObstacleDef::Shape::Box: box(out, o.min, o.max); break;
             case ObstacleDef::Shape::Sphere: sphere(out, o.center, o.radius); break;
@@ -111,6 +114,11 @@ std::vector<SolidVertex> tessellate(const std::vector<ObstacleDef>& obstacles, f
                 }
                 break;
         }
+        if (k < poses.size())
+            for (std::size_t v = first; v < out.size(); ++v) {
+                out[v].position = poses[k].rotation * out[v].position + poses[k].translation;
+                out[v].normal = poses[k].rotation * out[v].normal;
+            }
     }
     return out;
 }

@@ -143,8 +143,8 @@ struct Renderer::Impl {
         std::vector<glm::vec3> vertices;
         for (int e : edges) vertices.push_back(corners[e]);
         upload(boxBuffer, vertices);
-        // Obstacles are fixed, but cheap to tessellate again with each new state.
-        const std::vector<SolidVertex> solid = tessellate(s.obstacles, 2.0f * glm::length(hi - lo));
+        // Cheap to tessellate again with each new state, where moving obstacles are now.
+        const std::vector<SolidVertex> solid = tessellate(s.obstacles, 2.0f * glm::length(hi - lo), s.obstaclePoses);
         upload(solidBuffer, solid);
         solidVertices = static_cast<GLsizei>(solid.size());
     }

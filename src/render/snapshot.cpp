@@ -13,6 +13,8 @@ void takeSnapshot(const World& world, Snapshot& out) {
     out.materials.clear();
     for (const MaterialDef& m : world.materials()) out.materials.push_back({m.name, m.color, m.restDensity});
     out.obstacles = world.obstacles();
+    out.obstaclePoses.clear();
+    for (std::uint32_t k = 0; k < out.obstacles.size(); ++k) out.obstaclePoses.push_back(world.obstaclePose(k, world.time()));
     out.domainMin = world.def().domainMin;
     out.domainMax = world.def().domainMax;
     out.particleSpacing = world.def().particleSpacing;

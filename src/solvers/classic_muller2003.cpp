@@ -67,17 +67,22 @@ void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
             }
         }
         float wallViscosity = 0.0f;
+        glm::vec3 wallDrive(0.0f);  // Σ_b V_b ∇²W_ib v_b, moving walls only
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             const float r = glm::length(rib);
             if (r > 0.0f) pressureSum += (ctx.boundary.volume[b] * pi * -spiky.gradientScale(r) / r) * rib;
-            if (muller) wallViscosity += ctx.boundary.volume[b] * viscosity.laplacian(r);
+            if (!muller) continue;
+            const float weight = ctx.boundary.volume[b] * viscosity.laplacian(r);
+            wallViscosity += weight;
+            if (ctx.boundary.moving) wallDrive += weight * ctx.boundary.velocity[b];
         }
         if (!muller) {
             p.acceleration[i] += ctx.gravity + pressureSum / p.density[i];
             return;
         }
-        // No-slip walls: v_b = −v_i (see viscosity.cpp).
+        // No-slip walls: v_b = −v_i at rest, 2 v_wall − v_i moving (see viscosity.cpp).
+        if (ctx.boundary.moving) viscousSum += (2.0f * mui) * wallDrive;
         viscousSum -= (2.0f * mui * wallViscosity) * vi;
         p.acceleration[i] = ctx.gravity + (pressureSum + viscousSum) / p.density[i];
     });
@@ -94,9 +99,9 @@ double ClassicMuller2003::step(StepContext& ctx) {
     ctx.lap(Phase::PressureSolve);
 
     const auto n = p.size();
-    const float maxSpeed2 = parallelMax(n, ctx.threads, [&](std::uint32_t i) {
+    const float maxSpeed2 = std::max(parallelMax(n, ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.velocity[i], p.velocity[i]);
-    }, 0.0f);
+    }, 0.0f), ctx.boundary.maxSpeed * ctx.boundary.maxSpeed);  // moving walls too: see sph::maxSpeed
     const float maxAccel2 = parallelMax(n, ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.acceleration[i], p.acceleration[i]);
     }, 0.0f);

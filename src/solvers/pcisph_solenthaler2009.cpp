@@ -77,21 +77,25 @@ void PcisphSolenthaler2009::predictPositions(StepContext& ctx, float dt) {
     });
 }
 
-void PcisphSolenthaler2009::predictCompression(StepContext& ctx) {
+void PcisphSolenthaler2009::predictCompression(StepContext& ctx, float dt) {
     ParticleStore& p = ctx.particles;
     const kernels::CubicSpline w(ctx.supportRadius);
     const float self = w.value(0.0f);
     error_.resize(p.size());
     residual_.resize(p.size());
-    // The neighbours of x(t), as the paper does: x* is less than a spacing away.
+    // The neighbours of x(t), as the paper does: x* is less than a spacing away. Moving walls
+    // are where they will be at the end of the step, x_b + Δt v_b (as in dfsph).
+    const bool moving = ctx.boundary.moving;
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = predicted_[i];
         float number = self;  // ρ*_i = m_i Σ_j W_ij (Solenthaler & Pajarola 2008)
         for (const std::uint32_t j : ctx.neighbors.of(i)) number += w.value(glm::length(ctx.delta(xi, predicted_[j])));
         const float rho = p.mass[i] * number;
         float boundaryVolume = 0.0f;
-        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
+        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+            const glm::vec3 xb = moving ? ctx.boundary.position[b] + dt * ctx.boundary.velocity[b] : ctx.boundary.position[b];
+            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, xb)));
+        }
         const float rho0 = ctx.materials[p.material[i]].restDensity;
         residual_[i] = rho + rho0 * boundaryVolume - rho0;
         // Expansion is an error only where pressure could still relax: free-surface particles
@@ -155,7 +159,7 @@ PcisphSolenthaler2009::Solve PcisphSolenthaler2009::solvePressure(StepContext& c
     Solve solve;
     for (; solve.iterations < ctx.solver.maxIterations; ++solve.iterations) {
         predictPositions(ctx, dt);
-        predictCompression(ctx);
+        predictCompression(ctx, dt);
         const double compression = meanRelativeCompression(ctx);
         if (solve.iterations == 0) solve.uncorrected = compression;
         if (compression <= kDensityTarget * ctx.solver.maxDensityError) {

@@ -52,7 +52,7 @@ private:
     /// x*_i = x_i + Δt (v_i + Δt (a^{v,g}_i + a^p_i)).
     void predictPositions(StepContext& ctx, float dt);
     /// residual_ and error_ at the predicted positions.
-    void predictCompression(StepContext& ctx);
+    void predictCompression(StepContext& ctx, float dt);
     /// Mean over particles of error_[i] / ρ0_i (serial, so it does not depend on the thread count).
     [[nodiscard]] double meanRelativeCompression(const StepContext& ctx) const;
     /// pressureAccel_ from pressure_ (and the walls' pressure from it) at the current positions.

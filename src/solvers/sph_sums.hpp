@@ -69,12 +69,13 @@ inline SolverDef explicitForceLimits(const StepContext& ctx, float maxTensionAcc
     return limits;
 }
 
-/// Largest particle speed, m/s.
+/// Largest speed of a fluid particle or a moving boundary particle, m/s: the CFL step must
+/// not let a fast paddle or obstacle pass a particle spacing in one step.
 inline float maxSpeed(const StepContext& ctx) {
     const ParticleStore& p = ctx.particles;
-    return std::sqrt(parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) {
+    return std::max(std::sqrt(parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.velocity[i], p.velocity[i]);
-    }, 0.0f));
+    }, 0.0f)), ctx.boundary.maxSpeed);
 }
 
 }  // namespace tide::sph

@@ -58,4 +58,63 @@ inline World waveFlume(float spacing, float length, float depth, const WaveMaker
     return world;
 }
 
+/// A plate pushed through still water: a flume `length` long with water `depth` deep, one
+/// periodic cell of 4 spacings across z (2D), and a plate 4 spacings thick standing on the
+/// floor in the middle, 2.5 depths high, that moves along +x at `speed` after a 0.1 s ramp.
+inline World pushedPlate(float spacing, float length, float depth, float speed, int threads = 0,
+                         const std::string& solver = "dfsph") {
+    WorldDef def;
+    def.solver.method = solver;
+    def.domainMin = {0.0f, 0.0f, 0.0f};
+    def.domainMax = {length, 3.0f * depth, 4.0f * spacing};
+    def.periodic = {false, false, true};
+    def.particleSpacing = spacing;
+    def.threads = threads;
+    World world(def);
+    world.addMaterial(MaterialDef{});
+    ObstacleDef plate;
+    plate.shape = ObstacleDef::Shape::Box;
+    plate.min = {0.5f * length - 2.0f * spacing, 0.0f, 0.0f};
+    plate.max = {0.5f * length + 2.0f * spacing, 2.5f * depth, def.domainMax.z};
+    plate.motion.type = MotionDef::Type::Translation;
+    plate.motion.velocity = {speed, 0.0f, 0.0f};
+    plate.motion.rampTime = 0.1f;
+    world.addObstacle(plate);
+    world.addBlock({{0.0f, 0.0f, 0.0f}, {length, depth, def.domainMax.z}, {}, 0});
+    return world;
+}
+
+/// A cylinder of `radius` spinning at `omega` rad/s (after a 0.1 s ramp) about the y axis in
+/// the middle of a square box `width` wide, filled with a fluid of dynamic viscosity `mu`
+/// (ρ0 = 1000), without gravity; y is one periodic cell of 4 spacings (2D, Couette-like).
+inline World spinningCylinder(float spacing, float width, float radius, float omega, float mu, int threads = 0,
+                              const std::string& solver = "dfsph") {
+    WorldDef def;
+    def.solver.method = solver;
+    def.domainMin = {0.0f, 0.0f, 0.0f};
+    def.domainMax = {width, 4.0f * spacing, width};
+    def.periodic = {false, true, false};
+    def.gravity = {0.0f, 0.0f, 0.0f};
+    def.particleSpacing = spacing;
+    def.threads = threads;
+    World world(def);
+    MaterialDef fluid;
+    fluid.viscosity = mu;
+    world.addMaterial(fluid);
+    ObstacleDef cylinder;
+    cylinder.shape = ObstacleDef::Shape::Cylinder;
+    cylinder.center = {0.5f * width, 2.0f * spacing, 0.5f * width};
+    cylinder.axis = {0.0f, 1.0f, 0.0f};
+    cylinder.radius = radius;
+    cylinder.length = 8.0f * spacing;  // longer than the period: no caps inside the fluid
+    cylinder.motion.type = MotionDef::Type::Rotation;
+    cylinder.motion.axis = cylinder.axis;
+    cylinder.motion.center = cylinder.center;
+    cylinder.motion.angularVelocity = omega;
+    cylinder.motion.rampTime = 0.1f;
+    world.addObstacle(cylinder);
+    world.addBlock({def.domainMin, def.domainMax, {}, 0});
+    return world;
+}
+
 }  // namespace tide::scenarios

@@ -29,7 +29,8 @@ struct Snapshot {
     std::vector<float> pressure;           ///< Pa
     std::vector<MaterialIndex> material;
     std::vector<SnapshotMaterial> materials;
-    std::vector<ObstacleDef> obstacles;    ///< fixed solids (meshes shared, not copied)
+    std::vector<ObstacleDef> obstacles;    ///< solids in their rest pose (meshes shared, not copied)
+    std::vector<ObstaclePose> obstaclePoses;  ///< where each obstacle is at `time` (moving ones move)
     glm::vec3 domainMin{0.0f};             ///< container, m
     glm::vec3 domainMax{1.0f};
     float particleSpacing = 0.02f;         ///< m
