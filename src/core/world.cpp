@@ -59,6 +59,7 @@ void validateWorldDef(const WorldDef& d) {
     if (!(s.soundSpeed >= 0.0f) || !std::isfinite(s.soundSpeed))
         throw std::invalid_argument("solver.soundSpeed: must be >= 0 (0 = automatic), got " + show(s.soundSpeed));
     if (s.xsph >= 0.0f) requireInRange("solver.xsph", s.xsph, 0.0f, 1.0f);
+    if (s.momentum >= 0.0f) requireInRange("solver.momentum", s.momentum, 0.0f, 0.95f);
     requireInRange("solver.maxDensityError", s.maxDensityError, 1e-6f, 0.5f);
     if (s.minIterations < 0 || s.maxIterations < std::max(1, s.minIterations))
         throw std::invalid_argument("solver.maxIterations: must be >= max(1, minIterations), got " +

@@ -36,7 +36,7 @@ constexpr float kWarmStart = 0.5f;
 /// Off with a density contrast: there the Jacobi converges slowly at the stiff interfaces
 /// and the momentum overshoots them (5000/1000/200 columns at 1 cm: a light particle's κ
 /// ran away within 0.04 s; without it the drop settles).
-constexpr float kMomentum = 0.7f;
+constexpr float kMomentum = 0.7f;  // the default of SolverDef::momentum
 }  // namespace
 
 void DfsphBender2017::prepare(StepContext& ctx) {
@@ -308,6 +308,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
         k_[i] = kappa[i] * dt;
     });
     push();
+    const float heavyBall = ctx.solver.momentum >= 0.0f ? ctx.solver.momentum : kMomentum;
     int iteration = 0;
     bool converged = false;
     densityDiverged_ = false;
@@ -336,7 +337,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
         }
         // Projected Jacobi with momentum: κ stays ≥ 0 (no tension at the free surface) but may
         // fall back where the warm start pushed too hard; k_ still holds the last change (× Δt).
-        const float momentum = iteration > 0 && contrast_.uniform() ? kMomentum / dt : 0.0f;
+        const float momentum = iteration > 0 && contrast_.uniform() ? heavyBall / dt : 0.0f;
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const float updated =
                 std::max(kappa[i] + kRelaxation * residual_[i] * alpha_[i] * invDt2 + momentum * k_[i], 0.0f);  // eq. 12
