@@ -47,8 +47,8 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
             for (std::size_t i = 0; i < xs.size(); ++i)
                 if (!(inX[i] && inY[j] && inZ[k])) position.emplace_back(xs[i], ys[j], zs[k]);
     volume.assign(position.size(), particleVolume);
-    velocity.assign(position.size(), glm::vec3(0.0f));
-    acceleration.assign(position.size(), glm::vec3(0.0f));
+    velocity.assign(moving ? position.size() : 0, glm::vec3(0.0f));
+    acceleration.assign(moving ? position.size() : 0, glm::vec3(0.0f));
     movable.assign(position.size(), 0);
     grid.build(position, searchRadius, threads, periodic);
 }
@@ -78,8 +78,10 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
     for (std::size_t i = 0; i < points.size(); ++i)
         if (keep[i]) position.push_back(points[i]);
     volume.resize(position.size(), particleVolume);
-    velocity.resize(position.size(), glm::vec3(0.0f));
-    acceleration.resize(position.size(), glm::vec3(0.0f));
+    if (moving) {
+        velocity.resize(position.size(), glm::vec3(0.0f));
+        acceleration.resize(position.size(), glm::vec3(0.0f));
+    }
     movable.resize(position.size(), 0);
     grid.build(position, searchRadius, threads, periodic);
     return static_cast<std::uint32_t>(position.size() - before);

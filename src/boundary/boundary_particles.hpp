@@ -52,7 +52,8 @@ public:
     std::vector<glm::vec3> position;  ///< m
     std::vector<float> volume;        ///< V_b, m³
     /// Velocity and acceleration of each boundary particle (zero for walls at rest). Moving
-    /// boundaries (wave paddles) set them every step; solvers read them only when `moving`.
+    /// boundaries (paddles, moving obstacles) set them every step; solvers read them only when
+    /// `moving`. Empty while nothing moves: fixed walls would spend 24 B a particle on zeros.
     std::vector<glm::vec3> velocity;      ///< v_b, m/s
     std::vector<glm::vec3> acceleration;  ///< a_b, m/s²
     bool moving = false;                  ///< whether any boundary particle moves
