@@ -8,6 +8,7 @@
 #include <complex>
 #include <cstddef>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace tide::waves {
@@ -96,6 +97,67 @@ inline Split incidentReflected(std::complex<double> a1, std::complex<double> a2,
     const std::complex<double> incident = (a1 * e - a2) / det;
     const std::complex<double> reflected = (a2 - a1 * std::conj(e)) / det;
     return {std::abs(incident), std::abs(reflected)};
+}
+
+/// Incident and reflected waves and the wave number itself, from N ≥ 3 gauges at x_j along
+/// the flume: the least-squares fit of A_j = I e^{−κ x_j} + R e^{κ x_j}, κ = α + ik, over all
+/// gauges — the method of Mansard & Funke 1980 ("The measurement of incident and reflected
+/// spectra using a least squares method", Proc. 17th ICCE, eq. 5–9) with k an unknown as
+/// well, and α, the waves' spatial decay rate (1/m), an optional one. For given κ the fit is
+/// linear in I and R (2 × 2 normal equations); κ minimising the residual is found by a scan
+/// of [kLo, kHi] × [αLo, αHi] refined by shrinking coordinate steps. A two-gauge phase lag reads k with an error of up
+/// to ~ Kr rad at each gauge from the reflected wave; the fit separates the two.
+struct FlumeFit {
+    double k = 0.0;      ///< wave number, 1/m
+    double alpha = 0.0;  ///< spatial decay rate of the incident wave, 1/m (0 unless fitted)
+    std::complex<double> incident, reflected;  ///< amplitudes at x = 0 (η = Re(I e^{iωt − κx} + R e^{iωt + κx}))
+    double rmsResidual = 0.0;  ///< of the fit, m (complex amplitude)
+    [[nodiscard]] double coefficient() const { return std::abs(reflected) / std::abs(incident); }
+};
+namespace detail {
+inline FlumeFit fitAt(const std::vector<double>& x, const std::vector<std::complex<double>>& a, double k, double alpha) {
+    using C = std::complex<double>;
+    const C kappa(alpha, k);
+    C a11 = 0.0, a12 = 0.0, a22 = 0.0, b1 = 0.0, b2 = 0.0;
+    for (std::size_t j = 0; j < x.size(); ++j) {
+        const C e1 = std::exp(-kappa * x[j]), e2 = std::exp(kappa * x[j]);
+        a11 += std::norm(e1), a12 += std::conj(e1) * e2, a22 += std::norm(e2);
+        b1 += std::conj(e1) * a[j], b2 += std::conj(e2) * a[j];
+    }
+    const C det = a11 * a22 - a12 * std::conj(a12);
+    FlumeFit f;
+    f.k = k, f.alpha = alpha;
+    f.incident = (b1 * a22 - a12 * b2) / det;
+    f.reflected = (a11 * b2 - std::conj(a12) * b1) / det;
+    double sum = 0.0;
+    for (std::size_t j = 0; j < x.size(); ++j)
+        sum += std::norm(a[j] - f.incident * std::exp(-kappa * x[j]) - f.reflected * std::exp(kappa * x[j]));
+    f.rmsResidual = std::sqrt(sum / static_cast<double>(x.size()));
+    return f;
+}
+}  // namespace detail
+inline FlumeFit fitIncidentReflected(const std::vector<double>& x, const std::vector<std::complex<double>>& a, double kLo,
+                                     double kHi, double alphaLo = 0.0, double alphaHi = 0.0) {
+    constexpr int kSteps = 400, alphaSteps = 40;
+    FlumeFit best = detail::fitAt(x, a, kLo, alphaLo);
+    const bool withAlpha = alphaHi > alphaLo;
+    for (int ia = 0; ia <= (withAlpha ? alphaSteps : 0); ++ia)
+        for (int ik = 0; ik <= kSteps; ++ik) {
+            const FlumeFit f = detail::fitAt(x, a, kLo + (kHi - kLo) * ik / kSteps,
+                                             alphaLo + (alphaHi - alphaLo) * ia / alphaSteps);
+            if (f.rmsResidual < best.rmsResidual) best = f;
+        }
+    double dk = (kHi - kLo) / kSteps, da = withAlpha ? (alphaHi - alphaLo) / alphaSteps : 0.0;
+    for (int round = 0; round < 60; ++round) {
+        bool moved = false;
+        for (const auto& [sk, sa] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+            if (sa != 0 && !withAlpha) continue;
+            const FlumeFit f = detail::fitAt(x, a, best.k + sk * dk, best.alpha + sa * da);
+            if (f.rmsResidual < best.rmsResidual) best = f, moved = true;
+        }
+        if (!moved) dk *= 0.5, da *= 0.5;
+    }
+    return best;
 }
 
 }  // namespace tide::waves
