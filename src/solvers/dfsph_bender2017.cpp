@@ -268,7 +268,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
     return iteration;
 }
 
-int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
+int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
     const auto nb = static_cast<std::uint32_t>(ctx.boundary.position.size());
@@ -309,6 +309,16 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
     });
     push();
     const float heavyBall = ctx.solver.momentum >= 0.0f ? ctx.solver.momentum : kMomentum;
+    // A step the free-fall limit shortened removes the compression the particles already have
+    // (ρ_i − ρ0, what earlier solves left within their tolerance) over the step it would
+    // otherwise have taken, not within dt (Baumgarte 1972, "Stabilization of constraints and
+    // integrals of motion in dynamical systems", time constant driftTime): removing it within
+    // a shorter step takes a velocity ∝ 1/dt that the next step keeps. Measured in a thin box
+    // of still water at 1 cm (0.1 m deep, 2 s): 5 ms steps keep an RMS speed of 0.03 m/s,
+    // 3.6 ms steps without this 0.07. The target is lowered by the same factor so that the
+    // compression kept still ends within the tolerance. Unshortened steps keep nothing.
+    const float keep = dt < driftTime ? 1.0f - dt / driftTime : 0.0f;
+    const double target = kDensityTarget * ctx.solver.maxDensityError * (1.0 - keep);
     int iteration = 0;
     bool converged = false;
     densityDiverged_ = false;
@@ -320,17 +330,18 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt) {
         withPairVector(ctx.periodic, [&](auto delta) {
             parallelFor(n, ctx.threads, [&](std::uint32_t i) {
                 const float rho0 = ctx.materials[p.material[i]].restDensity;
-                residual_[i] = predictedDensity(ctx, delta, w, i) - rho0;  // ρ* − ρ0
+                // ρ* − ρ0, less the compression left to later steps
+                residual_[i] = predictedDensity(ctx, delta, w, i) - rho0 - keep * std::max(p.density[i] - rho0, 0.0f);
                 // Error left: compression anywhere, expansion only where pressure could still relax.
                 source_[i] = kappa[i] > 0.0f ? std::abs(residual_[i]) : std::max(residual_[i], 0.0f);
             });
         });
         const double error = meanRelativeSource(ctx);
-        converged = error <= kDensityTarget * ctx.solver.maxDensityError;
+        converged = error <= target;
         if (converged && iteration >= ctx.solver.minIterations) break;
         // Diverging (retaken shorter): the error doubled from where it started or from the
         // target, whichever is larger (min_iterations may stir a solve that started converged).
-        if (iteration == 0) initialError = std::max(error, kDensityTarget * ctx.solver.maxDensityError);
+        if (iteration == 0) initialError = std::max(error, target);
         else if (!converged && error > 2.0 * initialError && !contrast_.uniform()) {
             densityDiverged_ = true;
             break;
@@ -368,6 +379,8 @@ double DfsphBender2017::step(StepContext& ctx) {
     if (!contrast_.uniform())
         limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, DensityContrast::timeStepLimit(
                                     ctx.materials, glm::length(ctx.gravity), ctx.particleSpacing, ctx.solver.forceNumber)));
+    const SolverDef beforeFreeFall = limits;
+    sph::limitFreeFall(ctx, limits);
     const float speed = sph::maxSpeed(ctx);
     // With a density contrast a density solve that diverges (its error doubles) is taken
     // again at half the step, as pcisph does (Ihmsen et al. 2010); the cap grows back by a
@@ -378,9 +391,13 @@ double DfsphBender2017::step(StepContext& ctx) {
     double dt = 0.0;
     int densityIterations = 0;
     for (;;) {
-        SolverDef capped = limits;
-        if (!contrast_.uniform()) capped.maxDt = std::max(limits.minDt, std::min(static_cast<float>(dtCap_), limits.maxDt));
+        SolverDef capped = limits, cappedBeforeFreeFall = beforeFreeFall;
+        if (!contrast_.uniform()) {
+            capped.maxDt = std::max(limits.minDt, std::min(static_cast<float>(dtCap_), limits.maxDt));
+            cappedBeforeFreeFall.maxDt = std::max(limits.minDt, std::min(static_cast<float>(dtCap_), beforeFreeFall.maxDt));
+        }
         dt = cflTimeStep(capped, ctx.particleSpacing, speed, ctx.maxDt);
+        const double driftTime = std::max(dt, cflTimeStep(cappedBeforeFreeFall, ctx.particleSpacing, speed, ctx.maxDt));
         const auto dtTry = static_cast<float>(dt);
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             p.acceleration[i] = accel_[i];
@@ -391,7 +408,7 @@ double DfsphBender2017::step(StepContext& ctx) {
         xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
                     ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
         ctx.lap(Phase::NonPressureForces);
-        densityIterations += solveDensity(ctx, dtTry);
+        densityIterations += solveDensity(ctx, dtTry, static_cast<float>(driftTime));
         ctx.lap(Phase::PressureSolve);
         if (contrast_.uniform() || !densityDiverged_ || dt <= limits.minDt) break;
         dtCap_ = 0.5 * dt;

@@ -60,8 +60,9 @@ private:
                                          std::uint32_t i) const;
     /// Makes the velocity field divergence-free; returns iterations.
     int solveDivergence(StepContext& ctx);
-    /// Corrects the predicted velocities so the next positions have rest density; returns iterations.
-    int solveDensity(StepContext& ctx, float dt);
+    /// Corrects the predicted velocities so the next positions have rest density; returns
+    /// iterations. driftTime ≥ dt: the step before the free-fall limit (sph::limitFreeFall).
+    int solveDensity(StepContext& ctx, float dt, float driftTime);
     /// Mean over particles of source_[i] / ρ0_i: the solves' convergence measure (a
     /// parallelSum, so it does not depend on the thread count).
     [[nodiscard]] double meanRelativeSource(const StepContext& ctx) const;
