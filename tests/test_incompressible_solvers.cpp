@@ -89,11 +89,13 @@ TEST(DfsphSolver, HydrostaticTankMatchesRhoGD) {
 }
 
 // The tank at 1 cm (0.12 m square to keep it quick): 30 layers deep, where dfsph's Jacobi
-// needs ~26 iterations a step. At the fixed 5 ms max_dt its solves ran to the iteration
+// needs 25–33 iterations a step. At the fixed 5 ms max_dt its solves ran to the iteration
 // limit and it blew up within 0.03 s (speeds of 10–40,000 m/s); the free-fall step limit
-// (sph::limitFreeFall, 3.6 ms here) keeps it at rest. The 0.24 m tank through the issue's
-// full protocol runs with TIDE_LONG_TESTS=1.
-TEST(DfsphSolver, DeepTankAtOneCentimetreStaysAtRest) {
+// (sph::limitFreeFall, 3.6 ms here) carries it through the start. Not yet asserted, because
+// it still fails: this narrow tank blows up later, at 1.96 s (at 1.79 s before, with 3.6 ms
+// steps; docs/robustness.md). The 0.24 m tank through the full protocol runs with
+// TIDE_LONG_TESTS=1 (it lasts the 2 s, with the pressure 9 % low).
+TEST(DfsphSolver, DeepTankAtOneCentimetreHoldsThroughTheStart) {
     const float depth = 0.3f, s = 0.01f, width = 0.12f;
     WorldDef def;
     def.domainMax = {width, 0.5f, width};
@@ -110,7 +112,7 @@ TEST(DfsphSolver, DeepTankAtOneCentimetreStaysAtRest) {
     std::printf("dfsph 1 cm tank, 0.2 s: max speed %.3f m/s, max mean compression %.5f, mean dt %.2e s, %.1f iterations a step\n",
                 maxSpeed, maxCompression, world.stats().dtSum / static_cast<double>(world.stats().steps),
                 static_cast<double>(world.stats().pressureIterationsSum) / static_cast<double>(world.stats().steps));
-    // The lattice settling reaches ~0.2 m/s (as at 2 cm); the blow-up went past 10 m/s.
+    // The lattice settling reaches ~0.2 m/s (as at 2 cm); the early blow-up went past 10 m/s.
     EXPECT_LT(maxSpeed, 0.2f * std::sqrt(2.0f * 9.81f * depth));
     EXPECT_LE(maxCompression, SolverDef{}.maxDensityError);
     EXPECT_EQ(world.countEscapedParticles(), 0u);

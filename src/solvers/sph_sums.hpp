@@ -77,8 +77,9 @@ inline constexpr float kFreeFallShare = 1.0f / 80.0f;
 /// relaxed Jacobi solve needs ~the square of the water's depth in particle layers to build
 /// the hydrostatic pressure it takes, so a fixed max_dt fails as the spacing shrinks: dfsph
 /// in the 0.3 m tank at rest (30 layers at 1 cm) ran its solves to the iteration limit at
-/// 5 ms steps and blew up within 0.03 s; at 3.6 ms it takes 26 iterations a step and stays
-/// at rest. The limit is above the default 5 ms from 2 cm up: coarser scenes do not change.
+/// 5 ms steps and blew up within 0.03 s; at 3.6 ms it takes 25–33 iterations a step and
+/// lasts (the 0.24 m tank 2 s; a 0.12 m one blows up at ~2 s all the same: Jacobi is the
+/// weak part). The limit is above the default 5 ms from 2 cm up: coarser scenes do not change.
 inline void limitFreeFall(const StepContext& ctx, SolverDef& limits) {
     const float g = glm::length(ctx.gravity);
     if (g > 0.0f)
