@@ -94,13 +94,13 @@ inline void limitFreeFall(const StepContext& ctx, SolverDef& limits) {
 inline constexpr float kPressureCourant = 0.45f;
 
 /// Lowers limits.maxDt (never below minDt) to kPressureCourant · s / √(g D), D the depth of
-/// the water: its height along gravity, or the largest pressure head p/(ρ g) the last step
-/// reported if that is less (spray above the water makes the height alone too large). A
+/// the water: its height along gravity, or the largest pressure head κ/g of the last density
+/// solve if that is less (spray above the water makes the height alone too large). A
 /// relaxed Jacobi solve with momentum builds a hydrostatic pressure over ~(D/s)² sweeps and
 /// keeps up with g Δt² per step only while Δt √(g D) stays within about half a spacing: the
 /// 0.3 m tank at rest at 1 cm blew up at 5 ms steps within 0.03 s, with the free-fall limit
 /// alone (3.6 ms) at ~2 s, and at 0.5 s/√(gD) (2.9 ms) at 0.1 s; at 0.45 (2.6 ms) it holds,
-/// its pressure within 1.6 % RMS of ρgd (3.0 % in a 0.24 m square tank). The margin is the
+/// its pressure within 1.9 % RMS of ρgd (3.0 % in a 0.24 m square tank). The margin is the
 /// momentum's (docs/robustness.md). At 2 cm this gives 5.2 ms for 0.3 m of water: scenes at
 /// 2 cm and up to 0.3 m deep keep their 5 ms steps.
 inline void limitPressureSpeed(const StepContext& ctx, SolverDef& limits) {
@@ -112,7 +112,8 @@ inline void limitPressureSpeed(const StepContext& ctx, SolverDef& limits) {
                                       -std::numeric_limits<float>::max());
     const float highest = parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) { return -glm::dot(p.position[i], down); },
                                       -std::numeric_limits<float>::max());
-    const float head = parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) { return p.pressure[i] / p.density[i]; }, 0.0f);
+    // The density solve's κ: the divergence solve's impulses (impacts) are left out.
+    const float head = parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) { return p.warmKappa[i]; }, 0.0f);
     const float depth = deepest + highest + ctx.particleSpacing;  // particle centres lie half a spacing inside
     const float speed2 = std::min(g * depth, head);
     if (speed2 > 0.0f)
