@@ -28,12 +28,13 @@ struct Hydrostatics {
 /// A tank 0.3 m deep and `width` square (0.24 m, spacing 0.02 m unless given) settles for 1.5 s;
 /// pressure is then averaged over 0.5 s in depth bins one spacing thick, in the middle half of
 /// the width (away from the side walls).
-Hydrostatics hydrostaticTank(const std::string& solver, float s = 0.02f, float width = 0.24f) {
+Hydrostatics hydrostaticTank(const std::string& solver, float s = 0.02f, float width = 0.24f, float maxDt = 0.0f) {
     const float depth = 0.3f;
     WorldDef def;
     def.domainMax = {width, 0.5f, width};
     def.particleSpacing = s;
     def.solver.method = solver;
+    if (maxDt > 0.0f) def.solver.maxDt = maxDt;
     World world(def);
     world.addMaterial(MaterialDef{});
     world.addBlock({{0, 0, 0}, {width, depth, width}, {0, 0, 0}, 0});
@@ -93,8 +94,9 @@ TEST(DfsphSolver, HydrostaticTankMatchesRhoGD) {
 // The tank at 1 cm, 30 layers deep (0.12 m square to keep it quick). At the fixed 5 ms
 // max_dt dfsph's solves ran to the iteration limit and it blew up within 0.03 s (speeds of
 // 10–40,000 m/s); with the free-fall step limit alone (3.6 ms) it lasted to 1.96 s. The
-// pressure-speed limit (sph::limitPressureSpeed, 2.6 ms here) holds it: measured pressure
-// RMS 1.9 %, max speed 0.070 m/s, 16 iterations a step. The 0.24 m tank at 1 cm
+// pressure-speed limit (sph::pressureSpeedStep, 2.6 ms here) holds it: measured pressure
+// RMS 1.3 %, max speed 0.053 m/s (1.9 % and 0.070 while a frame's last step still removed
+// the compression kept within its own length), 16 iterations a step. The 0.24 m tank at 1 cm
 // runs with TIDE_LONG_TESTS=1.
 TEST(DfsphSolver, HydrostaticTankAtOneCentimetreMatchesRhoGD) {
     const Hydrostatics h = hydrostaticTank("dfsph", 0.01f, 0.12f);
@@ -109,6 +111,17 @@ TEST(DfsphSolver, WideHydrostaticTankAtOneCentimetreMatchesRhoGD) {
     EXPECT_LT(h.pressureRms, 0.05);
     EXPECT_LT(h.meanDensityError, 0.002);
     EXPECT_LT(h.maxSpeed, 0.1f);
+}
+
+// A max_dt below the step the water needs must not stir it: dfsph removes the compression
+// earlier solves left over the step it would have taken (5 ms here), not within 1 ms, which
+// took velocities ∝ 1/Δt (measured at 1 ms before: max speed 0.44–0.51 m/s in the 0.24 m tank).
+TEST(DfsphSolver, ShortMaxDtKeepsTheTankAtRest) {
+    const Hydrostatics h = hydrostaticTank("dfsph", 0.02f, 0.12f, 1e-3f);
+    EXPECT_LT(h.pressureRms, 0.05);
+    EXPECT_LT(h.meanDensityError, 0.002);
+    EXPECT_LT(h.maxSpeed, 0.1f);
+    EXPECT_LT(h.meanDt, 1.001e-3);
 }
 
 TEST(WcsphSolver, HydrostaticTankMatchesRhoGD) {

@@ -63,14 +63,16 @@ inline float maxKinematicViscosity(const StepContext& ctx) { return tide::maxKin
 /// below the user's floor minDt: viscosity and dye diffusion 0.125 s²/ν, surface tension
 /// forceNumber √(s/a) (surfaceTensionTimeStep). For the incompressible solvers, whose CFL
 /// step does not see forces.
-inline SolverDef explicitForceLimits(const StepContext& ctx, float maxTensionAccel) {
-    SolverDef limits = ctx.solver;
+inline SolverDef explicitForceLimits(const StepContext& ctx, SolverDef limits, float maxTensionAccel) {
     const float nu = tide::maxKinematicViscosity(ctx);
     if (nu > 0.0f)
         limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, 0.125f * ctx.particleSpacing * ctx.particleSpacing / nu));
     if (maxTensionAccel > 0.0f)
         limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, static_cast<float>(surfaceTensionTimeStep(ctx, maxTensionAccel))));
     return limits;
+}
+inline SolverDef explicitForceLimits(const StepContext& ctx, float maxTensionAccel) {
+    return explicitForceLimits(ctx, ctx.solver, maxTensionAccel);
 }
 
 /// Gravity may move a particle at rest by g Δt² ≤ this fraction of the spacing in one step.
@@ -90,11 +92,11 @@ inline void limitFreeFall(const StepContext& ctx, SolverDef& limits) {
         limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, std::sqrt(kFreeFallShare * ctx.particleSpacing / g)));
 }
 
-/// Courant number of the pressure-speed step limit (limitPressureSpeed).
+/// Courant number of the pressure-speed step limit (pressureSpeedStep).
 inline constexpr float kPressureCourant = 0.45f;
 
-/// Lowers limits.maxDt (never below minDt) to kPressureCourant · s / √(g D), D the depth of
-/// the water: its height along gravity, or the largest pressure head κ/g of the last density
+/// The pressure-speed step limit kPressureCourant · s / √(g D), infinite without gravity; D the
+/// depth of the water: its height along gravity, or the largest pressure head κ/g of the last density
 /// solve if that is less (spray above the water makes the height alone too large). A
 /// relaxed Jacobi solve with momentum builds a hydrostatic pressure over ~(D/s)² sweeps and
 /// keeps up with g Δt² per step only while Δt √(g D) stays within about half a spacing: the
@@ -103,10 +105,11 @@ inline constexpr float kPressureCourant = 0.45f;
 /// its pressure within 1.9 % RMS of ρgd (3.0 % in a 0.24 m square tank). The margin is the
 /// momentum's (docs/robustness.md). At 2 cm this gives 5.2 ms for 0.3 m of water: scenes at
 /// 2 cm and up to 0.3 m deep keep their 5 ms steps.
-inline void limitPressureSpeed(const StepContext& ctx, SolverDef& limits) {
+inline float pressureSpeedStep(const StepContext& ctx) {
     const ParticleStore& p = ctx.particles;
     const float g = glm::length(ctx.gravity);
-    if (!(g > 0.0f) || p.size() == 0) return;
+    constexpr float none = std::numeric_limits<float>::infinity();
+    if (!(g > 0.0f) || p.size() == 0) return none;
     const glm::vec3 down = ctx.gravity / g;
     const float deepest = parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) { return glm::dot(p.position[i], down); },
                                       -std::numeric_limits<float>::max());
@@ -116,8 +119,7 @@ inline void limitPressureSpeed(const StepContext& ctx, SolverDef& limits) {
     const float head = parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) { return p.warmKappa[i]; }, 0.0f);
     const float depth = deepest + highest + ctx.particleSpacing;  // particle centres lie half a spacing inside
     const float speed2 = std::min(g * depth, head);
-    if (speed2 > 0.0f)
-        limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, kPressureCourant * ctx.particleSpacing / std::sqrt(speed2)));
+    return speed2 > 0.0f ? kPressureCourant * ctx.particleSpacing / std::sqrt(speed2) : none;
 }
 
 /// Largest speed of a fluid particle or a moving boundary particle, m/s: the CFL step must
