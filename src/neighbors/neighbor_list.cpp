@@ -69,14 +69,21 @@ struct CandidateSet {
     }
 };
 
+/// Chunks of a list build per thread, taken dynamically: the work per query is uneven (the wall
+/// shell lists its floor first, and most of the rest is far from the fluid), and one static
+/// chunk per thread left one thread idle. Measured on the 50k dam break, 2 threads, 0.5 s
+/// (median of 3): boundary-to-fluid lists 2.29 → 1.91 s, fluid lists 5.56 → 5.11 s. The lists
+/// do not depend on the chunking: chunks are concatenated in order.
+constexpr int kChunksPerThread = 8;
+
 }  // namespace
 
 template <class ForEachParticleOfChunk>
-void NeighborList::linkChunks(int chunks, ForEachParticleOfChunk&& forEachParticleOfChunk) {
+void NeighborList::linkChunks(int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk) {
     std::vector<std::uint64_t> base(static_cast<std::size_t>(chunks) + 1, 0);
     for (int c = 0; c < chunks; ++c) base[c + 1] = base[c] + chunkBuffers_[static_cast<std::size_t>(c)].size();
     pairs_ = base[chunks];
-#pragma omp parallel for schedule(static, 1) num_threads(chunks)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
         const std::uint32_t* buffer = chunkBuffers_[static_cast<std::size_t>(c)].data();
         forEachParticleOfChunk(c, [&](std::uint32_t i) {
@@ -92,8 +99,8 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
     begin_.resize(n);
     first_.resize(n);
     count_.resize(n);
-    // Cells are split into one contiguous range per thread, balanced by particle count.
-    const int chunks = n >= kParallelGrain ? threads : 1;
+    // Cells are split into contiguous ranges, balanced by particle count.
+    const int chunks = n >= kParallelGrain ? threads * kChunksPerThread : 1;
     const std::uint32_t cells = grid.cellCount();
     std::vector<std::uint32_t> firstCell(static_cast<std::size_t>(chunks) + 1, cells);
     for (int c = 0; c < chunks; ++c) {
@@ -112,7 +119,7 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
         for (std::uint32_t cell = firstCell[c]; cell < firstCell[c + 1]; ++cell)
             if (grid.cellStart(cell) < grid.cellStart(cell + 1)) f(cell);
     };
-#pragma omp parallel for schedule(static, 1) num_threads(chunks)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
         std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
         buffer.clear();
@@ -130,7 +137,7 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
             }
         });
     }
-    linkChunks(chunks, [&](int c, auto&& f) {
+    linkChunks(chunks, threads, [&](int c, auto&& f) {
         forEachCell(c, [&](std::uint32_t cell) {
             for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) f(sorted[k]);
         });
@@ -144,7 +151,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
     begin_.resize(n);
     first_.resize(n);
     count_.resize(n);
-    const int chunks = n >= kParallelGrain ? threads : 1;
+    const int chunks = n >= kParallelGrain ? threads * kChunksPerThread : 1;
     chunkBuffers_.resize(static_cast<std::size_t>(chunks));
     auto chunkBegin = [&](int c) { return static_cast<std::uint32_t>(std::uint64_t{n} * c / chunks); };
     const auto sorted = grid.sortedParticles();
@@ -159,7 +166,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
             lo[axis] = -std::numeric_limits<float>::infinity();
             hi[axis] = std::numeric_limits<float>::infinity();
         }
-#pragma omp parallel for schedule(static, 1) num_threads(chunks)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
         std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
         buffer.clear();
@@ -179,7 +186,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
             count_[i] = static_cast<std::uint32_t>(buffer.size() - begin_[i]);
         }
     }
-    linkChunks(chunks, [&](int c, auto&& f) {
+    linkChunks(chunks, threads, [&](int c, auto&& f) {
         for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) f(i);
     });
 }

@@ -50,13 +50,13 @@ private:
     /// buffer and shifts its begin_ by the pairs of the chunks before;
     /// `forEachParticleOfChunk(c, f)` calls f(i) for chunk c's particles.
     template <class ForEachParticleOfChunk>
-    void linkChunks(int chunks, ForEachParticleOfChunk&& forEachParticleOfChunk);
+    void linkChunks(int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk);
 
     std::vector<std::uint64_t> begin_;         ///< offset of i's first pair in the list's pair order
     std::vector<const std::uint32_t*> first_;  ///< i's first neighbour in its chunk's buffer
     std::vector<std::uint32_t> count_;
     std::uint64_t pairs_ = 0;
-    std::vector<std::vector<std::uint32_t>> chunkBuffers_;  ///< per-thread lists, capacity kept between builds
+    std::vector<std::vector<std::uint32_t>> chunkBuffers_;  ///< per-chunk lists, capacity kept between builds
 };
 
 }  // namespace tide
