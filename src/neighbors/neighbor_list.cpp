@@ -1,7 +1,10 @@
 #include "neighbors/neighbor_list.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "core/parallel.hpp"
 
@@ -80,27 +83,37 @@ constexpr int kChunksPerThread = 8;
 
 template <class ForEachParticleOfChunk>
 void NeighborList::linkChunks(int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk) {
-    std::vector<std::uint64_t> base(static_cast<std::size_t>(chunks) + 1, 0);
-    for (int c = 0; c < chunks; ++c) base[c + 1] = base[c] + chunkBuffers_[static_cast<std::size_t>(c)].size();
-    pairs_ = base[chunks];
+    chunkBase_.assign(static_cast<std::size_t>(chunks) + 1, 0);
+    for (int c = 0; c < chunks; ++c) chunkBase_[c + 1] = chunkBase_[c] + chunkBuffers_[static_cast<std::size_t>(c)].size();
+    pairs_ = chunkBase_[chunks];
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
-        const std::uint32_t* buffer = chunkBuffers_[static_cast<std::size_t>(c)].data();
+        const std::uint32_t* next = chunkBuffers_[static_cast<std::size_t>(c)].data();
+        const std::uint32_t tag = static_cast<std::uint32_t>(c) << kCountBits;
         forEachParticleOfChunk(c, [&](std::uint32_t i) {
-            first_[i] = buffer + begin_[i];
-            begin_[i] += base[c];
+            first_[i] = next;
+            next += count_[i];
+            count_[i] |= tag;
         });
     }
 }
 
+namespace {
+/// Throws if a particle had more neighbours than count_ keeps (flagged by the chunks that
+/// found them: an exception must not leave an OpenMP region).
+void throwIfTooMany(const std::atomic<bool>& tooMany, std::uint32_t limit) {
+    if (tooMany.load())
+        throw std::length_error("NeighborList: a particle has more than " + std::to_string(limit) + " neighbours");
+}
+}  // namespace
+
 void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads) {
     const auto n = static_cast<std::uint32_t>(positions.size());
     const float radius2 = radius * radius;
-    begin_.resize(n);
     first_.resize(n);
     count_.resize(n);
     // Cells are split into contiguous ranges, balanced by particle count.
-    const int chunks = n >= kParallelGrain ? threads * kChunksPerThread : 1;
+    const int chunks = n >= kParallelGrain ? std::min(threads * kChunksPerThread, kMaxChunks) : 1;
     const std::uint32_t cells = grid.cellCount();
     std::vector<std::uint32_t> firstCell(static_cast<std::size_t>(chunks) + 1, cells);
     for (int c = 0; c < chunks; ++c) {
@@ -119,6 +132,7 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
         for (std::uint32_t cell = firstCell[c]; cell < firstCell[c + 1]; ++cell)
             if (grid.cellStart(cell) < grid.cellStart(cell + 1)) f(cell);
     };
+    std::atomic<bool> tooMany{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
         std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
@@ -131,12 +145,15 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
             candidates.gather(grid, positions, {cx, cy, cz});
             for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) {
                 const std::uint32_t i = sorted[k];
-                begin_[i] = buffer.size();
+                const std::size_t begin = buffer.size();
                 candidates.appendWithin(positions[i], radius2, i, grid.periodic(), buffer);
-                count_[i] = static_cast<std::uint32_t>(buffer.size() - begin_[i]);
+                const std::size_t count = buffer.size() - begin;
+                if (count > kCountMask) tooMany.store(true);
+                count_[i] = static_cast<std::uint32_t>(count) & kCountMask;
             }
         });
     }
+    throwIfTooMany(tooMany, kCountMask);
     linkChunks(chunks, threads, [&](int c, auto&& f) {
         forEachCell(c, [&](std::uint32_t cell) {
             for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) f(sorted[k]);
@@ -148,10 +165,9 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
                               std::span<const glm::vec3> queries, float radius, int threads) {
     const auto n = static_cast<std::uint32_t>(queries.size());
     const float radius2 = radius * radius;
-    begin_.resize(n);
     first_.resize(n);
     count_.resize(n);
-    const int chunks = n >= kParallelGrain ? threads * kChunksPerThread : 1;
+    const int chunks = n >= kParallelGrain ? std::min(threads * kChunksPerThread, kMaxChunks) : 1;
     chunkBuffers_.resize(static_cast<std::size_t>(chunks));
     auto chunkBegin = [&](int c) { return static_cast<std::uint32_t>(std::uint64_t{n} * c / chunks); };
     const auto sorted = grid.sortedParticles();
@@ -166,12 +182,13 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
             lo[axis] = -std::numeric_limits<float>::infinity();
             hi[axis] = std::numeric_limits<float>::infinity();
         }
+    std::atomic<bool> tooMany{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
         std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
         buffer.clear();
         for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
-            begin_[i] = buffer.size();
+            const std::size_t begin = buffer.size();
             const glm::vec3 q = queries[i];
             if (grid.empty() || q.x < lo.x || q.y < lo.y || q.z < lo.z || q.x > hi.x || q.y > hi.y || q.z > hi.z) {
                 count_[i] = 0;
@@ -183,9 +200,12 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
                     if (d.x * d.x + d.y * d.y + d.z * d.z <= radius2) buffer.push_back(sorted[k]);
                 }
             });
-            count_[i] = static_cast<std::uint32_t>(buffer.size() - begin_[i]);
+            const std::size_t count = buffer.size() - begin;
+            if (count > kCountMask) tooMany.store(true);
+            count_[i] = static_cast<std::uint32_t>(count) & kCountMask;
         }
     }
+    throwIfTooMany(tooMany, kCountMask);
     linkChunks(chunks, threads, [&](int c, auto&& f) {
         for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) f(i);
     });

@@ -38,23 +38,36 @@ public:
     void buildCross(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
                     std::span<const glm::vec3> queries, float radius, int threads);
 
-    [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const { return {first_[i], count_[i]}; }
+    [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const { return {first_[i], count_[i] & kCountMask}; }
     /// Position of i's first neighbour in the list's pair order: per-pair data computed
     /// alongside the list (e.g. kernel factors) is indexed by offset(i) + k.
-    [[nodiscard]] std::uint64_t offset(std::uint32_t i) const { return begin_[i]; }
+    [[nodiscard]] std::uint64_t offset(std::uint32_t i) const {
+        const std::uint32_t chunk = count_[i] >> kCountBits;
+        return chunkBase_[chunk] + static_cast<std::uint64_t>(first_[i] - chunkBuffers_[chunk].data());
+    }
     [[nodiscard]] std::uint32_t particleCount() const { return static_cast<std::uint32_t>(count_.size()); }
     [[nodiscard]] std::uint64_t pairCount() const { return pairs_; }
 
 private:
+    /// count_ holds a particle's neighbour count in its low kCountBits bits and the index of
+    /// the chunk that found it above: the pair offset is then found from first_ and a
+    /// per-chunk base, with no 8-byte offset per particle (~28 bytes a fluid particle at 205k
+    /// across the fluid and wall lists).
+    static constexpr unsigned kCountBits = 20;
+    static constexpr std::uint32_t kCountMask = (1u << kCountBits) - 1u;
+    static constexpr int kMaxChunks = 1 << (32 - kCountBits);
+
     /// Once every chunk's buffer is final: points each particle's first_ into its chunk's
-    /// buffer and shifts its begin_ by the pairs of the chunks before;
-    /// `forEachParticleOfChunk(c, f)` calls f(i) for chunk c's particles.
+    /// buffer (its pairs follow those of the particles before it in the chunk), tags its
+    /// count with the chunk and records each chunk's first pair offset;
+    /// `forEachParticleOfChunk(c, f)` calls f(i) for chunk c's particles in the order they
+    /// were found.
     template <class ForEachParticleOfChunk>
     void linkChunks(int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk);
 
-    std::vector<std::uint64_t> begin_;         ///< offset of i's first pair in the list's pair order
     std::vector<const std::uint32_t*> first_;  ///< i's first neighbour in its chunk's buffer
-    std::vector<std::uint32_t> count_;
+    std::vector<std::uint32_t> count_;         ///< neighbours, and the chunk (above kCountBits)
+    std::vector<std::uint64_t> chunkBase_;     ///< pair offset of each chunk's first pair
     std::uint64_t pairs_ = 0;
     std::vector<std::vector<std::uint32_t>> chunkBuffers_;  ///< per-chunk lists, capacity kept between builds
 };

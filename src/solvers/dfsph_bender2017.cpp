@@ -43,7 +43,6 @@ constexpr float kMomentum = 0.7f;  // the default of SolverDef::momentum
 void DfsphBender2017::prepare(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
-    const auto nb = static_cast<std::uint32_t>(ctx.boundary.position.size());
     const kernels::CubicSpline w(ctx.supportRadius);
     // Densities (Solenthaler & Pajarola 2008 with Akinci et al. 2012 walls, as
     // sph::computeDensities) and the gradient factors from one square root per pair.
@@ -81,10 +80,6 @@ void DfsphBender2017::prepare(StepContext& ctx) {
             if (!uniform) rho *= p.mass[i];  // ρ_i = m_i δ_i
             p.density[i] = rho + ctx.materials[p.material[i]].restDensity * volume;
         });
-    });
-    wallPositionVolume_.resize(nb);
-    parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
-        wallPositionVolume_[b] = glm::vec4(ctx.boundary.position[b], ctx.boundary.volume[b]);
     });
 }
 
@@ -158,19 +153,19 @@ float DfsphBender2017::densityRate(const StepContext& ctx, PairVector delta, std
 template <class PairVector>
 float DfsphBender2017::predictedDensity(const StepContext& ctx, PairVector delta, const kernels::CubicSpline& w,
                                         std::uint32_t i) const {
-    const glm::vec3 xi(predicted_[i]);
-    float rho = predicted_[i].w * w.value(0.0f);
+    const glm::vec3 xi(positionK_[i]);
+    float rho = positionK_[i].w * w.value(0.0f);
     for (const std::uint32_t j : ctx.neighbors.of(i)) {
-        const glm::vec4 xj = predicted_[j];
+        const glm::vec4 xj = positionK_[j];
         const glm::vec3 r = delta(xi, glm::vec3(xj));
         rho += xj.w * w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
     }
     if (!contrast_.uniform()) rho *= ctx.particles.mass[i];  // m_i δ*_i
     float volume = 0.0f;
+    const glm::vec3* wallX = ctx.boundary.moving ? wallMoved_.data() : ctx.boundary.position.data();
     for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-        const glm::vec4 xb = wallPositionVolume_[b];
-        const glm::vec3 r = delta(xi, glm::vec3(xb));
-        volume += xb.w * w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
+        const glm::vec3 r = delta(xi, wallX[b]);
+        volume += ctx.boundary.volume[b] * w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
     }
     return rho + ctx.materials[ctx.particles.material[i]].restDensity * volume;
 }
@@ -185,10 +180,6 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
         const float part = p.mass[j] * k_[j] / p.density[j];
         positionK_[j] = glm::vec4(p.position[j], uniform ? part : p.mass[j] * part);
     });
-    if (!boundaryK.empty())
-        parallelFor(static_cast<std::uint32_t>(boundaryK.size()), ctx.threads, [&](std::uint32_t b) {
-            wallPositionK_[b] = glm::vec4(ctx.boundary.position[b], ctx.boundary.volume[b] * boundaryK[b]);
-        });
     withPairVector(ctx.periodic, [&](auto delta) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
@@ -215,9 +206,13 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
                 const auto walls = ctx.boundaryNeighbors.of(i);
                 f = wallF_.of(ctx.boundaryNeighbors, i).data();
                 glm::vec3 pushed = uniform ? wall : glm::vec3(0.0f);
+                // x_b and V_b k_b read from the boundary's arrays, not packed per step: only
+                // particles near walls take this loop, and a packed copy cost 16 bytes a
+                // boundary particle (~25 a fluid particle at 205k).
                 for (std::size_t k = 0; k < walls.size(); ++k) {
-                    const glm::vec4 xb = wallPositionK_[walls[k]];
-                    pushed += (xb.w * f[k]) * delta(xi, glm::vec3(xb));
+                    const std::uint32_t b = walls[k];
+                    const float volumeK = ctx.boundary.volume[b] * boundaryK[b];
+                    pushed += (volumeK * f[k]) * delta(xi, ctx.boundary.position[b]);
                 }
                 // k̃_b is p_b/ρ0_ref (density contrast): fluid i reads k_b = k̃_b ρ0_ref/ρ0_i.
                 wall = uniform ? pushed : wall + pushed / contrast_.scale(i);
@@ -285,10 +280,10 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
                   ctx.supportRadius, ctx.threads, contrast_.scale());
     // Moving walls are where they will be at the end of the step when the predicted densities are.
-    if (ctx.boundary.moving)
-        parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
-            wallPositionVolume_[b] = glm::vec4(ctx.boundary.position[b] + dt * ctx.boundary.velocity[b], ctx.boundary.volume[b]);
-        });
+    if (ctx.boundary.moving) {
+        wallMoved_.resize(nb);
+        parallelFor(nb, ctx.threads, [&](std::uint32_t b) { wallMoved_[b] = ctx.boundary.position[b] + dt * ctx.boundary.velocity[b]; });
+    }
     // Applies the change of κ (fluid, then walls from it) as a velocity change.
     auto push = [&] {
         wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa, scaledKappa_, ctx.threads), ctx.threads);
@@ -326,7 +321,8 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     double initialError = 0.0;
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            predicted_[i] = glm::vec4(p.position[i] + dt * p.velocity[i], positionMass_[i].w);
+            // positionK_ holds the predicted positions until push() packs the next κ change.
+            positionK_[i] = glm::vec4(p.position[i] + dt * p.velocity[i], positionMass_[i].w);
         });
         withPairVector(ctx.periodic, [&](auto delta) {
             parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -366,8 +362,6 @@ double DfsphBender2017::step(StepContext& ctx) {
     const auto n = p.size();
     prepare(ctx);
     positionK_.resize(n);
-    wallPositionK_.resize(ctx.boundary.position.size());
-    predicted_.resize(n);
     computeAlpha(ctx);
     ctx.lap(Phase::Density);
     divergenceK_.assign(n, 0.0f);

@@ -51,7 +51,7 @@ private:
     /// Σ_j m_j (v_i − v_j)·∇W_ij + Σ_b Ψ_b (v_i − v_b)·∇W_ib: the rate of change of ρ_i.
     template <class PairVector>
     [[nodiscard]] float densityRate(const StepContext& ctx, PairVector delta, std::uint32_t i) const;
-    /// ρ*_i: the density at the positions predicted_ holds (x + Δt v), over this step's
+    /// ρ*_i: the density at the predicted positions positionK_ holds (x + Δt v), over this step's
     /// neighbours. The paper linearises it, ρ_i + Δt Dρ_i/Dt (eq. 9); the kernel is convex where
     /// neighbours close in, so the linear guess misses up to 90 % of the tolerance at CFL 0.4
     /// in a dam break (measured).
@@ -87,10 +87,10 @@ private:
     std::vector<glm::vec3> wallGradient_;    ///< Σ_b V_b ∇W_ib
     std::vector<float> wallVelocityRate_;    ///< Σ_b V_b v_b·∇W_ib (moving walls only)
     std::vector<glm::vec4> positionMass_;    ///< (x_j, m_j); (x_j, 1) with a density contrast
-    std::vector<glm::vec4> positionK_;       ///< (x_j, m_j k_j/ρ_j) of one iteration
-    std::vector<glm::vec4> predicted_;       ///< (x_j + Δt v_j, m_j) of one iteration
-    std::vector<glm::vec4> wallPositionVolume_;  ///< (x_b, V_b)
-    std::vector<glm::vec4> wallPositionK_;   ///< (x_b, V_b k_b) of one iteration
+    /// (x_j, m_j k_j/ρ_j) of one iteration; in the density solve, between an iteration's start
+    /// and its κ update, the predicted (x_j + Δt v_j, m_j) (one array fewer: 16 bytes a particle)
+    std::vector<glm::vec4> positionK_;
+    std::vector<glm::vec3> wallMoved_;       ///< x_b + Δt v_b (moving boundaries only)
     std::vector<glm::vec3> accel_;
     XsphFilter xsph_;
     std::vector<glm::vec3> savedVelocity_;  ///< before a step that may be retaken (density contrast)
