@@ -69,6 +69,33 @@ TEST(Neighbors, SameListsForOneAndTwoThreads) {
         ASSERT_TRUE(std::ranges::equal(l1.of(i), l2.of(i))) << "particle " << i;
 }
 
+// Per-pair data (kernel factors, wall weights) is indexed by offset(i) + k: the particles'
+// ranges must tile [0, pairCount) without gaps or overlaps, in the same pair order for any
+// thread count (the offsets are recovered from the chunk kept in each count's top bits).
+TEST(Neighbors, PairOffsetsTileThePairRangeForAnyThreadCount) {
+    const float h = 0.25f;
+    const auto x = testPoints(h);
+    UniformGrid grid;
+    grid.build(x, h, 1);
+    std::vector<std::uint64_t> reference;
+    for (int threads : {1, 2, 3}) {
+        NeighborList list;
+        list.build(grid, x, h, threads);
+        std::vector<int> covered(list.pairCount(), 0);
+        std::vector<std::uint64_t> offsets;
+        for (std::uint32_t i = 0; i < x.size(); ++i) {
+            offsets.push_back(list.offset(i));
+            for (std::uint64_t k = 0; k < list.of(i).size(); ++k) {
+                ASSERT_LT(list.offset(i) + k, list.pairCount()) << "particle " << i;
+                ++covered[list.offset(i) + k];
+            }
+        }
+        EXPECT_TRUE(std::ranges::all_of(covered, [](int c) { return c == 1; })) << threads << " threads";
+        if (reference.empty()) reference = offsets;
+        EXPECT_EQ(offsets, reference) << threads << " threads";
+    }
+}
+
 TEST(Neighbors, CrossSetQueryMatchesBruteForce) {
     const float h = 0.3f;
     std::mt19937 rng(3);
