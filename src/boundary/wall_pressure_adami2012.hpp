@@ -22,6 +22,7 @@
 #include "boundary/boundary_particles.hpp"
 #include "core/kernels.hpp"
 #include "core/periodic_box.hpp"
+#include "core/scratch_resize.hpp"
 #include "core/parallel.hpp"
 #include "neighbors/neighbor_list.hpp"
 
@@ -39,7 +40,7 @@ public:
         weightSum_.assign(n, 0.0f);
         gravityTerm_.assign(n, 0.0f);
         kappa_.assign(n, 0.0f);
-        weights_.resize(fluidNear.pairCount());
+        resizeScratch(weights_, fluidNear.pairCount());
         parallelFor(n, threads, [&](std::uint32_t b) {
             const glm::vec3 xb = boundary.position[b];
             const glm::vec3 g = boundary.moving ? gravity - boundary.acceleration[b] : gravity;

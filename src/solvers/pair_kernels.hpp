@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/kernels.hpp"
+#include "core/scratch_resize.hpp"
 #include "neighbors/neighbor_list.hpp"
 
 namespace tide {
@@ -18,8 +19,8 @@ namespace tide {
 /// here the gradient factor F_ij = W'(r_ij)/r_ij, so that ∇W_ij = F_ij (x_i − x_j).
 class PairKernels {
 public:
-    /// Room for one value per pair of `list`.
-    void resize(const NeighborList& list) { values_.resize(list.pairCount()); }
+    /// Room for one value per pair of `list` (the values of the last list are lost).
+    void resize(const NeighborList& list) { resizeScratch(values_, list.pairCount()); }
 
     /// The values of i's pairs, aligned with list.of(i).
     [[nodiscard]] std::span<const float> of(const NeighborList& list, std::uint32_t i) const {
