@@ -102,7 +102,7 @@ inline constexpr float kPressureCourant = 0.45f;
 /// keeps up with g Δt² per step only while Δt √(g D) stays within about half a spacing: the
 /// 0.3 m tank at rest at 1 cm blew up at 5 ms steps within 0.03 s, with the free-fall limit
 /// alone (3.6 ms) at ~2 s, and at 0.5 s/√(gD) (2.9 ms) at 0.1 s; at 0.45 (2.6 ms) it holds,
-/// its pressure within 1.9 % RMS of ρgd (3.0 % in a 0.24 m square tank). The margin is the
+/// its pressure within 1.3 % RMS of ρgd (1.1 % in a 0.24 m square tank). The margin is the
 /// momentum's (docs/robustness.md). At 2 cm this gives 5.2 ms for 0.3 m of water: scenes at
 /// 2 cm and up to 0.3 m deep keep their 5 ms steps.
 inline float pressureSpeedStep(const StepContext& ctx) {
