@@ -282,7 +282,9 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     // Moving walls are where they will be at the end of the step when the predicted densities are.
     if (ctx.boundary.moving) {
         wallMoved_.resize(nb);
-        parallelFor(nb, ctx.threads, [&](std::uint32_t b) { wallMoved_[b] = ctx.boundary.position[b] + dt * ctx.boundary.velocity[b]; });
+        parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
+            wallMoved_[b] = ctx.boundary.position[b] + dt * ctx.boundary.velocity[b];
+        });
     }
     // Applies the change of κ (fluid, then walls from it) as a velocity change.
     auto push = [&] {
@@ -305,9 +307,9 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     });
     push();
     const float heavyBall = ctx.solver.momentum >= 0.0f ? ctx.solver.momentum : kMomentum;
-    // A step the free-fall limit or a short max_dt shortened removes the compression the particles already have
-    // (ρ_i − ρ0, what earlier solves left within their tolerance) over the step it would
-    // otherwise have taken, not within dt (Baumgarte 1972, "Stabilization of constraints and
+    // A step the free-fall limit or a short max_dt shortened removes the compression the
+    // particles already have (ρ_i − ρ0, what earlier solves left within their tolerance) over
+    // the step it would otherwise have taken, not within dt (Baumgarte 1972, "Stabilization of constraints and
     // integrals of motion in dynamical systems", time constant driftTime): removing it within
     // a shorter step takes a velocity ∝ 1/dt that the next step keeps. Measured in a thin box
     // of still water at 1 cm (0.1 m deep, 2 s): 5 ms steps keep an RMS speed of 0.03 m/s,
@@ -368,7 +370,8 @@ double DfsphBender2017::step(StepContext& ctx) {
     const int divergenceIterations = solveDivergence(ctx);
     ctx.lap(Phase::PressureSolve);
 
-    const float tensionAccel = sph::addNonPressureForces(ctx, accel_);
+    // Straight into the particles' acceleration, which the step reports: no copy of it kept.
+    const float tensionAccel = sph::addNonPressureForces(ctx, p.acceleration);
     ctx.lap(Phase::NonPressureForces);
     // The step limits from a given max_dt: explicit forces, a density contrast, pressure speed.
     const float pressureSpeed = sph::pressureSpeedStep(ctx);
@@ -412,8 +415,7 @@ double DfsphBender2017::step(StepContext& ctx) {
             std::max(dt, cflTimeStep(cappedDrift, ctx.particleSpacing, speed, std::numeric_limits<double>::infinity()));
         const auto dtTry = static_cast<float>(dt);
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            p.acceleration[i] = accel_[i];
-            p.velocity[i] += dtTry * accel_[i];
+            p.velocity[i] += dtTry * p.acceleration[i];
         });
         // XSPH is a non-pressure force too: smoothing after the density solve would undo part of it.
         ctx.lap(Phase::Integration);

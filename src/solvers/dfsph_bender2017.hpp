@@ -91,7 +91,6 @@ private:
     /// and its κ update, the predicted (x_j + Δt v_j, m_j) (one array fewer: 16 bytes a particle)
     std::vector<glm::vec4> positionK_;
     std::vector<glm::vec3> wallMoved_;       ///< x_b + Δt v_b (moving boundaries only)
-    std::vector<glm::vec3> accel_;
     XsphFilter xsph_;
     std::vector<glm::vec3> savedVelocity_;  ///< before a step that may be retaken (density contrast)
     double dtCap_ = 1e30;              ///< s; halved when a density solve diverges (density contrast)
