@@ -40,6 +40,10 @@ public:
 
     /// Reserve room for n particles in every array.
     void reserve(std::uint32_t n);
+    /// Room for `more` particles beyond size() in every array, growing by an eighth at least
+    /// rather than doubling as append alone would (a 50,653-particle block left a quarter of
+    /// every array unused).
+    void makeRoomFor(std::uint32_t more);
     /// Append one particle at rest pressure with dye concentration `c`; its id is the next free id.
     void append(const glm::vec3& x, const glm::vec3& v, float m, MaterialIndex mat, float rho0, float c = 0.0f);
     /// Reorder every array so that new[k] = old[order[k]]; order is a permutation of [0, size()).

@@ -1,5 +1,6 @@
 #include <tide/particles.hpp>
 
+#include <algorithm>
 #include <cassert>
 
 namespace tide {
@@ -18,6 +19,13 @@ void ParticleStore::reserve(std::uint32_t n) {
     id.reserve(n);
 }
 
+void ParticleStore::makeRoomFor(std::uint32_t more) {
+    const std::size_t needed = std::size_t{size()} + more;
+    if (needed <= position.capacity()) return;
+    const std::size_t grown = std::max(needed, position.capacity() + position.capacity() / 8);
+    reserve(static_cast<std::uint32_t>(std::min<std::size_t>(grown, 0xffffffffu)));
+}
+
 void ParticleStore::append(const glm::vec3& x, const glm::vec3& v, float m, MaterialIndex mat, float rho0, float c) {
     position.push_back(x);
     velocity.push_back(v);
@@ -33,35 +41,41 @@ void ParticleStore::append(const glm::vec3& x, const glm::vec3& v, float m, Mate
 }
 
 namespace {
+/// new[k] = old[order[k]] in place, cycle by cycle: a copy of the array was the re-sorting
+/// step's extra memory (12 bytes a particle for the positions).
 template <class T>
-void permuteArray(std::vector<T>& values, std::span<const std::uint32_t> order, std::vector<T>& scratch) {
-    scratch.resize(values.size());
-    for (std::size_t k = 0; k < order.size(); ++k) scratch[k] = values[order[k]];
-    values.swap(scratch);
+void permuteInPlace(std::vector<T>& values, std::span<const std::uint32_t> order, std::vector<bool>& placed) {
+    placed.assign(values.size(), false);
+    for (std::size_t start = 0; start < values.size(); ++start) {
+        if (placed[start]) continue;
+        T first = values[start];
+        std::size_t k = start;
+        for (;;) {
+            placed[k] = true;
+            const std::size_t from = order[k];
+            if (from == start) break;
+            values[k] = values[from];
+            k = from;
+        }
+        values[k] = first;
+    }
 }
 }  // namespace
 
 void ParticleStore::permute(std::span<const std::uint32_t> order) {
     assert(order.size() == size());
-    {
-        std::vector<glm::vec3> scratch;
-        permuteArray(position, order, scratch);
-        permuteArray(velocity, order, scratch);
-        permuteArray(acceleration, order, scratch);
-    }
-    {
-        std::vector<float> scratch;
-        permuteArray(density, order, scratch);
-        permuteArray(pressure, order, scratch);
-        permuteArray(mass, order, scratch);
-        permuteArray(warmKappa, order, scratch);
-        permuteArray(warmDivergence, order, scratch);
-        permuteArray(concentration, order, scratch);
-    }
-    std::vector<MaterialIndex> materialScratch;
-    permuteArray(material, order, materialScratch);
-    std::vector<std::uint32_t> idScratch;
-    permuteArray(id, order, idScratch);
+    std::vector<bool> placed;
+    permuteInPlace(position, order, placed);
+    permuteInPlace(velocity, order, placed);
+    permuteInPlace(acceleration, order, placed);
+    permuteInPlace(density, order, placed);
+    permuteInPlace(pressure, order, placed);
+    permuteInPlace(mass, order, placed);
+    permuteInPlace(warmKappa, order, placed);
+    permuteInPlace(warmDivergence, order, placed);
+    permuteInPlace(concentration, order, placed);
+    permuteInPlace(material, order, placed);
+    permuteInPlace(id, order, placed);
 }
 
 void ParticleStore::clear() {

@@ -1,11 +1,13 @@
 #pragma once
 /// \file
-/// Resizing scratch arrays whose contents every use rewrites (per-pair kernel factors, wall
-/// weights): growing a std::vector copies it into a block twice the size, and for ~30 MB of
-/// per-pair data the old and new blocks resident together were the run's peak memory
-/// (+113 bytes a fluid particle on the 205k dam break, at the step the pair count first
-/// outgrew the first step's).
+/// Growing arrays without doubling them. Scratch whose contents every use rewrites (per-pair
+/// kernel factors, wall weights) is freed before it grows: a std::vector copies itself into a
+/// block twice the size, and for ~30 MB of per-pair data the old and new blocks resident
+/// together were the run's peak memory (+113 bytes a fluid particle on the 205k dam break, at
+/// the step the pair count first outgrew the first step's). Buffers that keep their contents
+/// grow by an eighth.
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -20,6 +22,14 @@ void resizeScratch(std::vector<T>& values, std::size_t size) {
         values.reserve(size + size / 8);
     }
     values.resize(size);
+}
+
+/// Room for `size` elements, contents kept: when that outgrows the capacity it grows by an
+/// eighth at least, where push_back doubles (buffers that keep their capacity from step to
+/// step, such as the neighbour lists', would otherwise hold up to twice what they use).
+template <class T>
+void reserveGrowing(std::vector<T>& values, std::size_t size) {
+    if (size > values.capacity()) values.reserve(std::max(size, values.capacity() + values.capacity() / 8));
 }
 
 }  // namespace tide

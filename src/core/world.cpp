@@ -216,10 +216,12 @@ struct World::Impl {
         return n;
     }
 
-    void appendLattice(const Lattice& lattice, const glm::vec3& velocity, MaterialIndex material,
+    /// Appends the lattice's `count` points clear of obstacles (countLattice).
+    void appendLattice(const Lattice& lattice, std::uint64_t count, const glm::vec3& velocity, MaterialIndex material,
                        float concentration = 0.0f) {
         const float m = massOf(material);
         const float rho0 = materials[material].restDensity;
+        particles.makeRoomFor(static_cast<std::uint32_t>(count));
         lattice.forEach([&](const glm::vec3& x) {
             if (clearOfObstacles(x)) particles.append(x, velocity, m, material, rho0, concentration);
         });
@@ -256,8 +258,9 @@ struct World::Impl {
     void emit(double t0, double dt) {
         for (EmitterState& emitter : emitters) {
             const double dropped = emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
-                if (particles.size() + countLattice(layer) > def.capacity) return false;
-                appendLattice(layer, emitter.def.velocity, emitter.def.material, emitter.def.concentration);
+                const std::uint64_t count = countLattice(layer);
+                if (particles.size() + count > def.capacity) return false;
+                appendLattice(layer, count, emitter.def.velocity, emitter.def.material, emitter.def.concentration);
                 return true;
             });
             stats.emitterCapacityHits += dropped < 1.8e19 ? static_cast<std::uint64_t>(dropped) : ~std::uint64_t{0};
@@ -400,8 +403,9 @@ AddStatus World::addBlock(const BlockDef& block) {
     if (!impl_->insideDomain(lattice)) return AddStatus::OutsideDomain;
     if (!(block.concentration >= 0.0f) || !std::isfinite(block.concentration))
         throw std::invalid_argument("block.concentration: must be finite and >= 0, got " + show(block.concentration));
-    if (impl_->particles.size() + impl_->countLattice(lattice) > impl_->def.capacity) return AddStatus::OverCapacity;
-    impl_->appendLattice(lattice, block.velocity, block.material, block.concentration);
+    const std::uint64_t count = impl_->countLattice(lattice);
+    if (impl_->particles.size() + count > impl_->def.capacity) return AddStatus::OverCapacity;
+    impl_->appendLattice(lattice, count, block.velocity, block.material, block.concentration);
     return AddStatus::Added;
 }
 

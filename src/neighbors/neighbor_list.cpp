@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/parallel.hpp"
+#include "core/scratch_resize.hpp"
 
 namespace tide {
 
@@ -61,6 +62,7 @@ struct CandidateSet {
             }
         }
         std::size_t size = out.size();
+        reserveGrowing(out, size + count);
         out.resize(size + count);
         std::uint32_t* dst = out.data();
         const std::uint32_t* candidate = index.data();
@@ -197,7 +199,10 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
             grid.forEachNeighborRun(grid.cellOf(q), [&](std::uint32_t first, std::uint32_t last) {
                 for (std::uint32_t k = first; k < last; ++k) {
                     const glm::vec3 d = box.delta(q, gridPositions[sorted[k]]);
-                    if (d.x * d.x + d.y * d.y + d.z * d.z <= radius2) buffer.push_back(sorted[k]);
+                    if (d.x * d.x + d.y * d.y + d.z * d.z <= radius2) {
+                        reserveGrowing(buffer, buffer.size() + 1);
+                        buffer.push_back(sorted[k]);
+                    }
                 }
             });
             const std::size_t count = buffer.size() - begin;
