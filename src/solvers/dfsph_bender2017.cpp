@@ -422,8 +422,9 @@ double DfsphBender2017::step(StepContext& ctx) {
         });
         // XSPH is a non-pressure force too: smoothing after the density solve would undo part of it.
         ctx.lap(Phase::Integration);
+        // positionK_ is free until the density solve predicts positions into it.
         xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
-                    ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+                    ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads, positionK_);
         ctx.lap(Phase::NonPressureForces);
         densityIterations += solveDensity(ctx, dtTry, static_cast<float>(driftTime));
         ctx.lap(Phase::PressureSolve);
