@@ -60,19 +60,34 @@ public:
 
     /// κ_b from the fluid's κ_f over the lists and positions prepare() saw; read with kappa().
     void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads) {
-        parallelFor(static_cast<std::uint32_t>(kappa_.size()), threads, [&](std::uint32_t b) {
-            if (weightSum_[b] <= 0.0f) return;
-            const float* weight = weights_.data() + fluidNear.offset(b);
-            float sum = gravityTerm_[b];
-            for (const std::uint32_t f : fluidNear.of(b)) sum += fluidKappa[f] * *weight++;
-            kappa_[b] = std::max(sum / weightSum_[b], 0.0f);
-        });
+        update(fluidNear, fluidKappa, threads, [](std::uint32_t, float) {});
+    }
+    /// As above, and change[b] = (new κ_b − last κ_b)·scale for every b: what a solve that
+    /// pushes with the change of κ needs, without keeping the last κ_b in an array of its own.
+    void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads, float scale,
+                std::span<float> change) {
+        update(fluidNear, fluidKappa, threads, [&](std::uint32_t b, float updated) { change[b] = (updated - kappa_[b]) * scale; });
     }
 
     [[nodiscard]] std::span<const float> kappa() const { return kappa_; }
     [[nodiscard]] std::span<float> kappa() { return kappa_; }
 
 private:
+    template <class OnUpdate>
+    void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads, OnUpdate&& onUpdate) {
+        parallelFor(static_cast<std::uint32_t>(kappa_.size()), threads, [&](std::uint32_t b) {
+            float updated = kappa_[b];  // 0 (prepare) where no fluid is near
+            if (weightSum_[b] > 0.0f) {
+                const float* weight = weights_.data() + fluidNear.offset(b);
+                float sum = gravityTerm_[b];
+                for (const std::uint32_t f : fluidNear.of(b)) sum += fluidKappa[f] * *weight++;
+                updated = std::max(sum / weightSum_[b], 0.0f);
+            }
+            onUpdate(b, updated);
+            kappa_[b] = updated;
+        });
+    }
+
     std::vector<float> weightSum_;    ///< Σ_f W_bf
     std::vector<float> gravityTerm_;  ///< (g − a_b)·Σ_f (x_b − x_f) W_bf, m²/s²
     std::vector<float> kappa_;        ///< κ_b = p_b/ρ, m²/s²

@@ -276,7 +276,6 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     residual_.resize(n);
     k_.resize(n);
     boundaryK_.resize(nb);
-    boundaryKappa_.assign(nb, 0.0f);
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
                   ctx.supportRadius, ctx.threads, contrast_.scale());
     // Moving walls are where they will be at the end of the step when the predicted densities are.
@@ -288,12 +287,8 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     }
     // Applies the change of κ (fluid, then walls from it) as a velocity change.
     auto push = [&] {
-        wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa, scaledKappa_, ctx.threads), ctx.threads);
-        const auto wallKappa = wall_.kappa();
-        parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
-            boundaryK_[b] = (wallKappa[b] - boundaryKappa_[b]) * dt;
-            boundaryKappa_[b] = wallKappa[b];
-        });
+        wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa, scaledKappa_, ctx.threads), ctx.threads, dt,
+                     boundaryK_);
         applyPressure(ctx, boundaryK_);
     };
     // Warm start (§4.3) with half of the last step's κ: the full κ drifts within the

@@ -77,7 +77,6 @@ private:
     std::vector<float> divergenceK_;   ///< κᵛ·Δt summed over the divergence iterations, for the pressure output
     std::vector<float> kappa_;         ///< κ of the density solve so far, m²/s²
     std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
-    std::vector<float> boundaryKappa_; ///< κ_b applied so far this step
     WallPressure wall_;
     DensityContrast contrast_;         ///< several rest densities: Solenthaler & Pajarola 2008
     std::vector<float> scaledKappa_;   ///< κ̃ = κ ρ0_i/ρ0_ref for the wall pressure (several rest densities)
