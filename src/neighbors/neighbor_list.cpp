@@ -86,14 +86,22 @@ constexpr int kChunksPerThread = 8;
 template <class ForEachParticleOfChunk>
 void NeighborList::linkChunks(int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk) {
     chunkBase_.assign(static_cast<std::size_t>(chunks) + 1, 0);
-    for (int c = 0; c < chunks; ++c) chunkBase_[c + 1] = chunkBase_[c] + chunkBuffers_[static_cast<std::size_t>(c)].size();
+    chunkData_.resize(static_cast<std::size_t>(chunks));
+    for (int c = 0; c < chunks; ++c) {
+        const std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
+        // start_ is 32-bit: a chunk of 2^32 pairs (16 GiB of indices) would need more.
+        if (buffer.size() > std::numeric_limits<std::uint32_t>::max())
+            throw std::length_error("NeighborList: more than 2^32 pairs in one chunk");
+        chunkBase_[c + 1] = chunkBase_[c] + buffer.size();
+        chunkData_[static_cast<std::size_t>(c)] = buffer.data();
+    }
     pairs_ = chunkBase_[chunks];
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
-        const std::uint32_t* next = chunkBuffers_[static_cast<std::size_t>(c)].data();
+        std::uint32_t next = 0;
         const std::uint32_t tag = static_cast<std::uint32_t>(c) << kCountBits;
         forEachParticleOfChunk(c, [&](std::uint32_t i) {
-            first_[i] = next;
+            start_[i] = next;
             next += count_[i];
             count_[i] |= tag;
         });
@@ -112,7 +120,7 @@ void throwIfTooMany(const std::atomic<bool>& tooMany, std::uint32_t limit) {
 void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads) {
     const auto n = static_cast<std::uint32_t>(positions.size());
     const float radius2 = radius * radius;
-    first_.resize(n);
+    start_.resize(n);
     count_.resize(n);
     // Cells are split into contiguous ranges, balanced by particle count.
     const int chunks = n >= kParallelGrain ? std::min(threads * kChunksPerThread, kMaxChunks) : 1;
@@ -167,7 +175,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
                               std::span<const glm::vec3> queries, float radius, int threads) {
     const auto n = static_cast<std::uint32_t>(queries.size());
     const float radius2 = radius * radius;
-    first_.resize(n);
+    start_.resize(n);
     count_.resize(n);
     const int chunks = n >= kParallelGrain ? std::min(threads * kChunksPerThread, kMaxChunks) : 1;
     chunkBuffers_.resize(static_cast<std::size_t>(chunks));
