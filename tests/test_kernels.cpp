@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/kernels.hpp"
+#include "solvers/pair_kernels.hpp"
 
 namespace {
 
@@ -99,6 +100,27 @@ TEST(KernelSupport, ZeroAtAndBeyondSupport) {
         EXPECT_EQ(CubicSpline(h).value(r), 0.0f);
         EXPECT_EQ(Viscosity(h).laplacian(r), 0.0f);
     }
+}
+
+// The pressure solves read W'(r)/r per pair from 16-bit codes: every code is within half its
+// mantissa's step (2⁻¹², 2.4e-4) of the exact factor, from near 0 to the edge of the support,
+// where it is 0.
+TEST(PairKernels, CodedGradientFactorIsWithinItsPrecision) {
+    const float h = 0.04f;
+    const CubicSpline w(h);
+    tide::PairKernels factors;
+    factors.resize(tide::NeighborList{}, w);
+    const float bound = 12.0f * w.sigma / (h * h);  // |W'(r)/r| as r → 0, the largest
+    EXPECT_NEAR(factors.unit(), -bound, 1e-6f * bound);
+    float worst = 0.0f;
+    for (int k = 1; k < 4000; ++k) {
+        const float r = h * static_cast<float>(k) / 4000.0f;
+        const float exact = w.derivative(r) / r;
+        worst = std::max(worst, std::abs(factors.factor(factors.encode(w, r)) / exact - 1.0f));
+    }
+    EXPECT_LE(worst, 2.45e-4f);
+    EXPECT_EQ(factors.factor(factors.encode(w, h)), 0.0f);
+    EXPECT_EQ(factors.factor(factors.encode(w, 0.0f)), 0.0f);
 }
 
 }  // namespace

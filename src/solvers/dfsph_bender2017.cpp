@@ -54,20 +54,20 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         positionMass_[i] = glm::vec4(p.position[i], uniform ? p.mass[i] : 1.0f);
     });
-    fluidF_.resize(ctx.neighbors);
-    wallF_.resize(ctx.boundaryNeighbors);
+    fluidF_.resize(ctx.neighbors, w);
+    wallF_.resize(ctx.boundaryNeighbors, w);
     const float self = w.value(0.0f);
     withPairVector(ctx.periodic, [&](auto delta) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
             float rho = positionMass_[i].w * self;  // m_i δ_i: Σ_j m_j W_ij, or δ_i = Σ_j W_ij times m_i below
-            float* f = fluidF_.of(ctx.neighbors, i).data();
+            PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
             for (const std::uint32_t j : ctx.neighbors.of(i)) {
                 const glm::vec4 xj = positionMass_[j];
                 const glm::vec3 d = delta(xi, glm::vec3(xj));
                 const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
                 rho += xj.w * w.value(r);
-                *f++ = PairKernels::gradientFactor(w, r);
+                *f++ = fluidF_.encode(w, r);
             }
             float volume = 0.0f;
             f = wallF_.of(ctx.boundaryNeighbors, i).data();
@@ -75,7 +75,7 @@ void DfsphBender2017::prepare(StepContext& ctx) {
                 const glm::vec3 d = delta(xi, ctx.boundary.position[b]);
                 const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
                 volume += ctx.boundary.volume[b] * w.value(r);
-                *f++ = PairKernels::gradientFactor(w, r);
+                *f++ = wallF_.encode(w, r);
             }
             if (!uniform) rho *= p.mass[i];  // ρ_i = m_i δ_i
             p.density[i] = rho + ctx.materials[p.material[i]].restDensity * volume;
@@ -98,9 +98,9 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
         const float mi = p.mass[i];
         glm::vec3 fluidGrad(0.0f), wallGrad(0.0f);
         float sumSquares = 0.0f;
-        const float* f = fluidF_.of(ctx.neighbors, i).data();
+        const PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
         for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 g = (mi * *f++) * ctx.delta(xi, p.position[j]);
+            const glm::vec3 g = (mi * fluidF_.factor(*f++)) * ctx.delta(xi, p.position[j]);
             fluidGrad += g;
             // The exact factor is m_i/m_j; for a light i among heavy j it makes i's diagonal
             // tiny next to the terms through its light neighbours, and the Jacobi iteration
@@ -111,7 +111,7 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
         f = wallF_.of(ctx.boundaryNeighbors, i).data();
         float wallRate = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 g = (ctx.boundary.volume[b] * *f++) * ctx.delta(xi, ctx.boundary.position[b]);
+            const glm::vec3 g = (ctx.boundary.volume[b] * wallF_.factor(*f++)) * ctx.delta(xi, ctx.boundary.position[b]);
             wallGrad += g;
             if (ctx.boundary.moving) wallRate += glm::dot(ctx.boundary.velocity[b], g);
         }
@@ -135,14 +135,15 @@ float DfsphBender2017::densityRate(const StepContext& ctx, PairVector delta, std
     const ParticleStore& p = ctx.particles;
     const glm::vec3 xi = p.position[i];
     const glm::vec3 vi = p.velocity[i];
-    float rate = 0.0f;
+    float rate = 0.0f;  // in units of PairKernels::unit(), scaled once below
     const auto neighbors = ctx.neighbors.of(i);
-    const float* f = fluidF_.of(ctx.neighbors, i).data();
+    const PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
     for (std::size_t k = 0; k < neighbors.size(); ++k) {
         const std::uint32_t j = neighbors[k];
         const glm::vec4 xj = positionMass_[j];
-        rate += (xj.w * f[k]) * glm::dot(vi - p.velocity[j], delta(xi, glm::vec3(xj)));
+        rate += (xj.w * PairKernels::magnitude(f[k])) * glm::dot(vi - p.velocity[j], delta(xi, glm::vec3(xj)));
     }
+    rate = fluidF_.unit() * rate;
     if (!contrast_.uniform()) rate *= p.mass[i];  // m_i Σ_j v_ij·∇W_ij: Dρ_i/Dt of ρ_i = m_i δ_i
     // Walls: Σ_b Ψ_b (v_i − v_b)·∇W_ib, the v_b part kept from computeAlpha.
     const float wall = ctx.boundary.moving ? glm::dot(vi, wallGradient_[i]) - wallVelocityRate_[i]
@@ -184,18 +185,19 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
             // Σ_j (k_i m_i/ρ_i + k_j (m_j/m_i) m_j/ρ_j) ∇W_ij = (k_i/ρ_i) m_i Σ_j ∇W_ij + (1/m_i) Σ_j (m_j² k_j/ρ_j) ∇W_ij
-            float x = 0.0f, y = 0.0f, z = 0.0f;
+            float x = 0.0f, y = 0.0f, z = 0.0f;  // in units of PairKernels::unit(), scaled once below
             const auto neighbors = ctx.neighbors.of(i);
-            const float* f = fluidF_.of(ctx.neighbors, i).data();
+            const PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
             for (std::size_t k = 0; k < neighbors.size(); ++k) {
                 const glm::vec4 xj = positionK_[neighbors[k]];
                 const glm::vec3 r = delta(xi, glm::vec3(xj));
-                const float s = xj.w * f[k];
+                const float s = xj.w * PairKernels::magnitude(f[k]);
                 x += s * r.x;
                 y += s * r.y;
                 z += s * r.z;
             }
-            const glm::vec3 sum = uniform ? glm::vec3(x, y, z) : (1.0f / p.mass[i]) * glm::vec3(x, y, z);
+            const float unit = uniform ? fluidF_.unit() : fluidF_.unit() / p.mass[i];
+            const glm::vec3 sum = unit * glm::vec3(x, y, z);
             const glm::vec3 dv = (k_[i] / p.density[i]) * fluidGradient_[i] + sum;
             // Σ_b Ψ_b (κ_i/ρ_i + κ_b/ρ_b) ∇W_ib with Ψ_b = ρ0 V_b, ρ_b = ρ_i; κ_b = κ_i when mirrored.
             const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
@@ -204,7 +206,7 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
                 wall *= 2.0f;
             } else {
                 const auto walls = ctx.boundaryNeighbors.of(i);
-                f = wallF_.of(ctx.boundaryNeighbors, i).data();
+                const PairKernels::Code* fb = wallF_.of(ctx.boundaryNeighbors, i).data();
                 glm::vec3 pushed = uniform ? wall : glm::vec3(0.0f);
                 // x_b and V_b k_b read from the boundary's arrays, not packed per step: only
                 // particles near walls take this loop, and a packed copy cost 16 bytes a
@@ -212,7 +214,7 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
                 for (std::size_t k = 0; k < walls.size(); ++k) {
                     const std::uint32_t b = walls[k];
                     const float volumeK = ctx.boundary.volume[b] * boundaryK[b];
-                    pushed += (volumeK * f[k]) * delta(xi, ctx.boundary.position[b]);
+                    pushed += (volumeK * wallF_.factor(fb[k])) * delta(xi, ctx.boundary.position[b]);
                 }
                 // k̃_b is p_b/ρ0_ref (density contrast): fluid i reads k_b = k̃_b ρ0_ref/ρ0_i.
                 wall = uniform ? pushed : wall + pushed / contrast_.scale(i);
