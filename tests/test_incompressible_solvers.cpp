@@ -75,14 +75,13 @@ Hydrostatics hydrostaticTank(const std::string& solver, float s = 0.02f, float w
     return out;
 }
 
-// Issue 4 asks for a max speed < 0.02 m/s at rest; measured ~0.07–0.097 (dfsph, pcisph) and
-// ~0.04 (wcsph), so that bound is looser. The motion is the whole tank's, not a few surface
-// particles': at 2 s the interior's RMS speed is 0.02 m/s (dfsph). It comes in two parts:
-// the lattice's top layer settles into the layer below in the first 0.5 s (its density
-// deficit falls from 1 % to 0.09 %, releasing ~0.05 J, the kinetic energy's peak), and each
-// step's solve stops at its tolerance with a slightly different residual, kicks that XSPH
-// (ε = 0.01 per step) damps slowly. A damped settling phase removes the first part but not
-// the second: released after 1.5 s of settling, the tank is back at 0.03–0.07 m/s within 0.5 s.
+// Issue 4 asks for a max speed < 0.02 m/s at rest; measured 0.07–0.09 (dfsph, pcisph) and
+// 0.022 (wcsph), so that bound is looser. The motion is the whole tank's and particle-scale
+// (RMS 0.026 m/s at 2 s, 0.007 of it coherent over 6 cm): the particles rearrange from 0.25 s
+// on, releasing gravity's energy (the mean height falls ~0.5 mm), whatever the start
+// (lattice, body-centred, gravity ramped in), the solve's tolerance or the free surface (a
+// box filled to its lid does the same); XSPH (ε = 0.01 a step) damps it with a time
+// constant of ~2 s, and wcsph's 19× more steps damp it 19× faster (docs/robustness.md).
 TEST(DfsphSolver, HydrostaticTankMatchesRhoGD) {
     const Hydrostatics h = hydrostaticTank("dfsph");
     EXPECT_LT(h.pressureRms, 0.05);

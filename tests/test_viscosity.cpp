@@ -47,7 +47,7 @@ glm::vec3 operatorAtCentre(ViscosityModel model, const Field& field) {
     const std::vector<MaterialDef> materials{MaterialDef{"unit", 1.0f, 1.0f, {}}};
     const SolverDef solver;
     StepContext ctx{p, neighbors, materials, solver, glm::vec3(0.0f), h, s, 10.0f, boundary, boundaryNeighbors,
-                    boundaryFluidNeighbors, PeriodicBox{}, model, 1, 1.0};
+                    boundaryFluidNeighbors, {}, PeriodicBox{}, model, 1, 1.0};
     std::vector<glm::vec3> accel(p.size(), glm::vec3(0.0f));
     addViscosity(ctx, accel);
     return accel[p.size() / 2];

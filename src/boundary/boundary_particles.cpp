@@ -42,7 +42,7 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
     const auto ys = axisCoordinates(min.y, max.y, spacing, layersAlong(1), inY);
     const auto zs = axisCoordinates(min.z, max.z, spacing, layersAlong(2), inZ);
     position.clear();
-    // Exactly the shell's count: doubling growth left ~40 % of it unused (the shell outnumbers
+    // Exactly the shell's count: doubling growth left half of it unused (the shell outnumbers
     // the fluid 2.5 to 1 in the 50k benchmark dam break).
     const auto inside = [](const std::vector<bool>& in) { return static_cast<std::size_t>(std::count(in.begin(), in.end(), true)); };
     position.reserve(xs.size() * ys.size() * zs.size() - inside(inX) * inside(inY) * inside(inZ));

@@ -30,31 +30,37 @@ namespace tide {
 
 class WallPressure {
 public:
-    /// Kernel sums of each boundary particle over the fluid near it, at the current positions
-    /// (the kernel values are kept: the solves call update() every iteration).
-    void prepare(const BoundaryParticles& boundary, const NeighborList& fluidNear, std::span<const glm::vec3> fluid,
-                 const PeriodicBox& box, const glm::vec3& gravity, float supportRadius, int threads,
-                 std::span<const float> fluidScale = {}) {
+    /// Kernel sums of the boundary particles near fluid, `near` (in the order `fluidNear` was
+    /// built for: its query a is boundary particle near[a]), over the fluid near them, at the
+    /// current positions (the kernel values are kept: the solves call update() every
+    /// iteration). κ_b is kept for every boundary particle, but set only for those near fluid:
+    /// the fluid reads no other.
+    void prepare(const BoundaryParticles& boundary, const NeighborList& fluidNear, std::span<const std::uint32_t> near,
+                 std::span<const glm::vec3> fluid, const PeriodicBox& box, const glm::vec3& gravity, float supportRadius,
+                 int threads, std::span<const float> fluidScale = {}) {
         const kernels::CubicSpline w(supportRadius);
-        const auto n = static_cast<std::uint32_t>(boundary.position.size());
-        weightSum_.assign(n, 0.0f);
-        gravityTerm_.assign(n, 0.0f);
-        kappa_.assign(n, 0.0f);
+        const auto n = static_cast<std::uint32_t>(near.size());
+        near_ = near;
+        weightSum_.resize(n);
+        gravityTerm_.resize(n);
+        kappa_.resize(boundary.position.size());
         resizeScratch(weights_, fluidNear.pairCount());
-        parallelFor(n, threads, [&](std::uint32_t b) {
+        parallelFor(n, threads, [&](std::uint32_t a) {
+            const std::uint32_t b = near[a];
             const glm::vec3 xb = boundary.position[b];
             const glm::vec3 g = boundary.moving ? gravity - boundary.acceleration[b] : gravity;
-            float* weight = weights_.data() + fluidNear.offset(b);
+            float* weight = weights_.data() + fluidNear.offset(a);
             float weights = 0.0f, lift = 0.0f;
-            for (const std::uint32_t f : fluidNear.of(b)) {
+            for (const std::uint32_t f : fluidNear.of(a)) {
                 const glm::vec3 xbf = box.delta(xb, fluid[f]);
                 const float wbf = w.value(glm::length(xbf));
                 *weight++ = wbf;
                 weights += wbf;
                 lift += fluidScale.empty() ? glm::dot(g, xbf) * wbf : fluidScale[f] * glm::dot(g, xbf) * wbf;
             }
-            weightSum_[b] = weights;
-            gravityTerm_[b] = lift;
+            weightSum_[a] = weights;
+            gravityTerm_[a] = lift;
+            kappa_[b] = 0.0f;
         });
     }
 
@@ -62,35 +68,39 @@ public:
     void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads) {
         update(fluidNear, fluidKappa, threads, [](std::uint32_t, float) {});
     }
-    /// As above, and change[b] = (new κ_b − last κ_b)·scale for every b: what a solve that
-    /// pushes with the change of κ needs, without keeping the last κ_b in an array of its own.
+    /// As above, and change[b] = (new κ_b − last κ_b)·scale for each b near fluid (the others
+    /// are left as they are): what a solve that pushes with the change of κ needs, without
+    /// keeping the last κ_b in an array of its own.
     void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads, float scale,
                 std::span<float> change) {
         update(fluidNear, fluidKappa, threads, [&](std::uint32_t b, float updated) { change[b] = (updated - kappa_[b]) * scale; });
     }
 
+    /// κ_b by boundary particle; set for those near fluid (prepare).
     [[nodiscard]] std::span<const float> kappa() const { return kappa_; }
     [[nodiscard]] std::span<float> kappa() { return kappa_; }
 
 private:
     template <class OnUpdate>
     void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads, OnUpdate&& onUpdate) {
-        parallelFor(static_cast<std::uint32_t>(kappa_.size()), threads, [&](std::uint32_t b) {
-            float updated = kappa_[b];  // 0 (prepare) where no fluid is near
-            if (weightSum_[b] > 0.0f) {
-                const float* weight = weights_.data() + fluidNear.offset(b);
-                float sum = gravityTerm_[b];
-                for (const std::uint32_t f : fluidNear.of(b)) sum += fluidKappa[f] * *weight++;
-                updated = std::max(sum / weightSum_[b], 0.0f);
+        parallelFor(static_cast<std::uint32_t>(near_.size()), threads, [&](std::uint32_t a) {
+            const std::uint32_t b = near_[a];
+            float updated = kappa_[b];  // 0 (prepare) where the kernel sum is 0
+            if (weightSum_[a] > 0.0f) {
+                const float* weight = weights_.data() + fluidNear.offset(a);
+                float sum = gravityTerm_[a];
+                for (const std::uint32_t f : fluidNear.of(a)) sum += fluidKappa[f] * *weight++;
+                updated = std::max(sum / weightSum_[a], 0.0f);
             }
             onUpdate(b, updated);
             kappa_[b] = updated;
         });
     }
 
-    std::vector<float> weightSum_;    ///< Σ_f W_bf
-    std::vector<float> gravityTerm_;  ///< (g − a_b)·Σ_f (x_b − x_f) W_bf, m²/s²
-    std::vector<float> kappa_;        ///< κ_b = p_b/ρ, m²/s²
+    std::span<const std::uint32_t> near_;  ///< the boundary particles near fluid, as prepare() saw them
+    std::vector<float> weightSum_;    ///< Σ_f W_bf, per boundary particle near fluid
+    std::vector<float> gravityTerm_;  ///< (g − a_b)·Σ_f (x_b − x_f) W_bf, m²/s², likewise
+    std::vector<float> kappa_;        ///< κ_b = p_b/ρ, m²/s², per boundary particle
     std::vector<float> weights_;      ///< W_bf per pair of the fluid-near list
 };
 

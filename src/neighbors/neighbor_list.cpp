@@ -172,8 +172,10 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
 }
 
 void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
-                              std::span<const glm::vec3> queries, float radius, int threads) {
-    const auto n = static_cast<std::uint32_t>(queries.size());
+                              std::span<const glm::vec3> queries, float radius, int threads,
+                              std::span<const std::uint32_t> queryIndices) {
+    const bool indexed = !queryIndices.empty();
+    const auto n = static_cast<std::uint32_t>(indexed ? queryIndices.size() : queries.size());
     const float radius2 = radius * radius;
     start_.resize(n);
     count_.resize(n);
@@ -199,7 +201,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
         buffer.clear();
         for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
             const std::size_t begin = buffer.size();
-            const glm::vec3 q = queries[i];
+            const glm::vec3 q = queries[indexed ? queryIndices[i] : i];
             if (grid.empty() || q.x < lo.x || q.y < lo.y || q.z < lo.z || q.x > hi.x || q.y > hi.y || q.z > hi.z) {
                 count_[i] = 0;
                 continue;

@@ -34,9 +34,11 @@ public:
     /// cell size ≥ radius.
     void build(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads);
     /// Find, for every query point i, the points j of another set (the one `grid` was built
-    /// from, at `gridPositions`) with |q_i − x_j|² ≤ radius².
+    /// from, at `gridPositions`) with |q_i − x_j|² ≤ radius². With `queryIndices`, the queries
+    /// are queries[queryIndices[a]] and the lists are indexed by a.
     void buildCross(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
-                    std::span<const glm::vec3> queries, float radius, int threads);
+                    std::span<const glm::vec3> queries, float radius, int threads,
+                    std::span<const std::uint32_t> queryIndices = {});
 
     [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const {
         return {chunkData_[count_[i] >> kCountBits] + start_[i], count_[i] & kCountMask};

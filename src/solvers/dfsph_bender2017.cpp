@@ -278,7 +278,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     residual_.resize(n);
     k_.resize(n);
     boundaryK_.resize(nb);
-    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
+    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity,
                   ctx.supportRadius, ctx.threads, contrast_.scale());
     // Moving walls are where they will be at the end of the step when the predicted densities are.
     if (ctx.boundary.moving) {

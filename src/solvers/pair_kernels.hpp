@@ -21,9 +21,10 @@ namespace tide {
 /// neighbour list, in its pair order (NeighborList::offset), so that ∇W_ij = F_ij (x_i − x_j).
 /// Kept in 16 bits as a small float: F lies in [−12σ/h², 0] (its value as r → 0), and
 /// F / (−12σ/h²) in [2⁻³¹, 1] is coded with 5 exponent and 11 mantissa bits (0 for less), so
-/// every factor is within 2.4e-4 of itself. (A fixed-point code, finer at half the support,
-/// was 1.6 % off near its edge, and the 1 cm tank at rest and a two-fluid interface read
-/// worse for it.) Half the bytes of a float: ~60 bytes a fluid particle.
+/// every factor is within 2.4e-4 (relative) of its exact value. (A fixed-point code, finer
+/// at half the support, was 1.6 % off near its edge, and the 1 cm tank at rest and a
+/// two-fluid interface read worse for it.) Half the bytes of a float: ~60 bytes a fluid
+/// particle.
 class PairKernels {
 public:
     using Code = std::uint16_t;

@@ -184,7 +184,7 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
     const auto n = p.size();
     sph::computeDensities(ctx);
     contrast_.prepare(p, ctx.materials, ctx.threads);
-    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity, ctx.supportRadius,
+    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity, ctx.supportRadius,
                   ctx.threads, contrast_.scale());
     ctx.lap(Phase::Density);
     const float tensionAccel = sph::addNonPressureForces(ctx, accel_);

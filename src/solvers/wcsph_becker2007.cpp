@@ -26,7 +26,7 @@ double WcsphBecker2007::step(StepContext& ctx) {
     kappa_.resize(n);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { kappa_[i] = p.pressure[i] / p.density[i]; });
     contrast_.prepare(p, ctx.materials, ctx.threads);
-    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, p.position, ctx.periodic, ctx.gravity,
+    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity,
                   ctx.supportRadius, ctx.threads, contrast_.scale());
     wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa_, scaledKappa_, ctx.threads), ctx.threads);
     const auto wallKappa = wall_.kappa();
