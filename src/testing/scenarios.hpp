@@ -39,11 +39,12 @@ inline World damBreak(float spacing, int threads = 0, float length = 1.6f, float
 /// A numerical wave flume: water `depth` deep in a tank `length` long, one periodic cell of
 /// `width` (a whole number of spacings, ≥ 4) across z, so it behaves as a 2D flume without
 /// side-wall friction; a wave maker with its face at `paddle.x` and a damping zone over the
-/// last `dampingLength` metres. The domain is twice the depth high.
+/// last `dampingLength` metres. The domain is twice the depth high. `supportRatio` 0: the default.
 inline World waveFlume(float spacing, float length, float depth, const WaveMakerDef& paddle, float dampingLength,
-                       int threads = 0, int widthInSpacings = 4, const SolverDef& solver = {}) {
+                       int threads = 0, int widthInSpacings = 4, const SolverDef& solver = {}, float supportRatio = 0.0f) {
     WorldDef def;
     def.solver = solver;
+    if (supportRatio > 0.0f) def.supportRatio = supportRatio;
     def.domainMin = {0.0f, 0.0f, 0.0f};
     def.domainMax = {length, 2.0f * depth, static_cast<float>(widthInSpacings) * spacing};
     def.periodic = {false, false, true};
