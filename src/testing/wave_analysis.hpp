@@ -4,6 +4,7 @@
 /// by the wave tests and benchmarks: zero up-crossing periods and heights, the complex
 /// amplitude at one frequency, and the incident/reflected split of two gauges.
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstddef>
@@ -156,6 +157,69 @@ inline FlumeFit fitIncidentReflected(const std::vector<double>& x, const std::ve
             if (f.rmsResidual < best.rmsResidual) best = f, moved = true;
         }
         if (!moved) dk *= 0.5, da *= 0.5;
+    }
+    return best;
+}
+
+/// A damped oscillation η(t) ≈ e^(−βt)(A sin ωt + B cos ωt) + C fitted by least squares
+/// (A, B, C linear for each ω, β; ω and β searched on a grid in [omegaLo, omegaHi] × [0,
+/// betaHi], then refined): a frequency that uses the whole record, less sensitive to particle
+/// noise than counting crossings.
+struct DampedFit {
+    double omega = 0.0;        ///< rad/s
+    double beta = 0.0;         ///< decay rate, 1/s
+    double amplitude = 0.0;    ///< √(A² + B²) at t = 0
+    double rmsResidual = 0.0;
+};
+namespace detail {
+inline DampedFit fitDampedAt(const Record& r, double omega, double beta) {
+    double s[3][3] = {}, rhs[3] = {};
+    for (std::size_t k = 0; k < r.eta.size(); ++k) {
+        const double t = r.time(k), e = std::exp(-beta * t);
+        const double f[3] = {e * std::sin(omega * t), e * std::cos(omega * t), 1.0};
+        for (int i = 0; i < 3; ++i) {
+            rhs[i] += f[i] * r.eta[k];
+            for (int j = 0; j < 3; ++j) s[i][j] += f[i] * f[j];
+        }
+    }
+    // Gaussian elimination of the 3×3 normal equations (symmetric positive definite).
+    for (int c = 0; c < 3; ++c)
+        for (int i = c + 1; i < 3; ++i) {
+            const double m = s[i][c] / s[c][c];
+            for (int j = c; j < 3; ++j) s[i][j] -= m * s[c][j];
+            rhs[i] -= m * rhs[c];
+        }
+    double x[3];
+    for (int i = 2; i >= 0; --i) {
+        x[i] = rhs[i];
+        for (int j = i + 1; j < 3; ++j) x[i] -= s[i][j] * x[j];
+        x[i] /= s[i][i];
+    }
+    double sum = 0.0;
+    for (std::size_t k = 0; k < r.eta.size(); ++k) {
+        const double t = r.time(k), e = std::exp(-beta * t);
+        const double fit = e * (x[0] * std::sin(omega * t) + x[1] * std::cos(omega * t)) + x[2];
+        sum += (r.eta[k] - fit) * (r.eta[k] - fit);
+    }
+    return {omega, beta, std::hypot(x[0], x[1]), std::sqrt(sum / static_cast<double>(std::max<std::size_t>(1, r.eta.size())))};
+}
+}  // namespace detail
+inline DampedFit fitDampedOscillation(const Record& r, double omegaLo, double omegaHi, double betaHi = 1.0) {
+    constexpr int omegaSteps = 300, betaSteps = 20;
+    DampedFit best = detail::fitDampedAt(r, omegaLo, 0.0);
+    for (int ib = 0; ib <= betaSteps; ++ib)
+        for (int iw = 0; iw <= omegaSteps; ++iw) {
+            const DampedFit f = detail::fitDampedAt(r, omegaLo + (omegaHi - omegaLo) * iw / omegaSteps, betaHi * ib / betaSteps);
+            if (f.rmsResidual < best.rmsResidual) best = f;
+        }
+    double dw = (omegaHi - omegaLo) / omegaSteps, db = betaHi / betaSteps;
+    for (int round = 0; round < 60; ++round) {
+        bool moved = false;
+        for (const auto& [sw, sb] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+            const DampedFit f = detail::fitDampedAt(r, best.omega + sw * dw, std::max(0.0, best.beta + sb * db));
+            if (f.rmsResidual < best.rmsResidual) best = f, moved = true;
+        }
+        if (!moved) dw *= 0.5, db *= 0.5;
     }
     return best;
 }
