@@ -167,4 +167,31 @@ TEST(WaveAnalysis, LeastSquaresFitSeparatesReflectionAndFindsTheWaveNumber) {
     EXPECT_GT(std::abs(twoGauge / k - 1.0), 0.01);
 }
 
+TEST(WaveAnalysis, DampedOscillationFitFindsFrequencyAndDecayThroughNoise) {
+    // A sloshing mode: 0.01 m at 6.5 rad/s, decaying at 0.16 1/s, over a 1 mm offset, with
+    // ±2 mm of deterministic "particle noise" at incommensurate high frequencies.
+    const double omega = 6.5, beta = 0.16, amplitude = 0.01, phase = 0.3;
+    Record r{0.01, 0.01, {}};
+    for (int n = 0; n < 400; ++n) {
+        const double t = r.time(static_cast<std::size_t>(n));
+        r.eta.push_back(0.001 + amplitude * std::exp(-beta * t) * std::sin(omega * t + phase) +
+                        0.001 * std::sin(97.0 * t) + 0.001 * std::cos(151.3 * t + 1.0));
+    }
+    const DampedFit fit = fitDampedOscillation(r, 0.7 * 6.3235, 1.3 * 6.3235, 2.0);
+    EXPECT_NEAR(fit.omega, omega, 2e-3 * omega);
+    EXPECT_NEAR(fit.beta, beta, 0.01);
+    EXPECT_NEAR(fit.amplitude, amplitude, 3e-4);
+    EXPECT_NEAR(fit.rmsResidual, 0.001, 2e-4);  // the noise's RMS, √(2 · 0.001²/2)
+    // A record without noise is fitted to round-off.
+    Record clean{0.01, 0.01, {}};
+    for (int n = 0; n < 400; ++n) {
+        const double t = clean.time(static_cast<std::size_t>(n));
+        clean.eta.push_back(amplitude * std::exp(-beta * t) * std::sin(omega * t + phase));
+    }
+    const DampedFit exact = fitDampedOscillation(clean, 0.7 * 6.3235, 1.3 * 6.3235, 2.0);
+    EXPECT_NEAR(exact.omega, omega, 1e-6 * omega);
+    EXPECT_NEAR(exact.beta, beta, 1e-5);
+    EXPECT_LT(exact.rmsResidual, 1e-8);
+}
+
 }  // namespace
