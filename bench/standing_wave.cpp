@@ -11,52 +11,33 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <string>
 
 #include <CLI/CLI.hpp>
 
 #include <tide/world.hpp>
 
+#include "tank_options.hpp"
+#include "testing/scenarios.hpp"
 #include "testing/wave_analysis.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"Frequency of the first standing-wave mode of a closed tank against linear theory"};
-    std::string solver = "dfsph";
-    float spacing = 0.02f, supportRatio = tide::WorldDef{}.supportRatio, amplitude = 0.01f, length = 0.68f, depth = 0.3f;
+    tide::bench::TankOptions tank;
     // The flume test's solver settings (tests/test_wave_tank.cpp).
-    float maxDensityError = 0.003f, xsph = 0.0f, momentum = 0.0f;
+    tank.maxDensityError = 0.003f;
+    tank.xsph = 0.0f;
+    tank.momentum = 0.0f;
+    float amplitude = 0.01f;
     double seconds = 4.0;
-    int threads = 1, width = 0;
-    app.add_option("--solver", solver, "solver.method")->capture_default_str();
-    app.add_option("--spacing", spacing, "particle spacing, m")->capture_default_str()->check(CLI::PositiveNumber);
-    app.add_option("--support-ratio", supportRatio, "kernel support / spacing")->capture_default_str()->check(CLI::Range(1.0, 4.0));
+    tank.addTo(app);
     app.add_option("--amplitude", amplitude, "mode amplitude a, m")->capture_default_str()->check(CLI::PositiveNumber);
-    app.add_option("--length", length, "tank length L, m")->capture_default_str()->check(CLI::PositiveNumber);
-    app.add_option("--depth", depth, "water depth d, m")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--seconds", seconds, "simulated time, s")->capture_default_str()->check(CLI::PositiveNumber);
-    app.add_option("--max-density-error", maxDensityError, "solver.max_density_error")->capture_default_str();
-    app.add_option("--xsph", xsph, "solver.xsph")->capture_default_str();
-    app.add_option("--momentum", momentum, "solver.momentum (dfsph)")->capture_default_str();
-    app.add_option("--width", width, "periodic width in spacings (0: the least the support allows, at least 4)");
-    app.add_option("--threads", threads, "worker threads")->capture_default_str();
     CLI11_PARSE(app, argc, argv);
 
+    const float length = tank.length, depth = tank.depth;
     const double g = 9.81, k = std::numbers::pi / length, omega = std::sqrt(g * k * std::tanh(k * depth));
-    if (width <= 0) width = std::max(4, static_cast<int>(std::ceil(2.0f * supportRatio - 1e-4f)));
-    tide::WorldDef def;
-    def.domainMax = {length, 2.0f * depth, static_cast<float>(width) * spacing};
-    def.periodic = {false, false, true};
-    def.particleSpacing = spacing;
-    def.supportRatio = supportRatio;
-    def.threads = threads;
-    def.solver.method = solver;
-    def.solver.maxDensityError = maxDensityError;
-    def.solver.xsph = xsph;
-    def.solver.momentum = momentum;
     try {
-        tide::World world(def);
-        world.addMaterial(tide::MaterialDef{});
-        world.addBlock({{0.0f, 0.0f, 0.0f}, {length, depth, def.domainMax.z}, {}, 0});
+        tide::World world = tide::scenarios::stillTank(tank.worldDef(), length, depth, tank.widthInSpacings());
         // Velocity potential φ = (aω / (k sinh kd)) cosh(ky) cos(kx) at t = 0 (y from the floor).
         const auto& p = world.particles();
         auto v = world.velocities();
@@ -67,7 +48,7 @@ int main(int argc, char** argv) {
                              static_cast<float>(scale * std::sinh(k * y) * std::cos(k * x)), 0.0f);
         }
         tide::waves::Record mode{0.01, 0.01, {}};
-        const float z = 0.5f * def.domainMax.z;
+        const float z = 0.5f * world.def().domainMax.z;
         const int samples = static_cast<int>(std::lround(seconds / mode.dt));
         for (int n = 0; n < samples; ++n) {
             world.advance(mode.dt);
@@ -86,7 +67,7 @@ int main(int argc, char** argv) {
         std::printf("%s, spacing %.4f m, support %.2f spacings, a = %.4f m, L = %.3f m, d = %.3f m: omega %.4f rad/s "
                     "against %.4f (%+.2f %%), amplitude %.4f m, decay %.3f 1/s, fit residual %.1e m; %llu steps, %.1f "
                     "pressure iterations a step\n",
-                    solver.c_str(), spacing, supportRatio, amplitude, length, depth, fit.omega, omega,
+                    tank.solver.c_str(), tank.spacing, tank.supportRatio, amplitude, length, depth, fit.omega, omega,
                     100.0 * (fit.omega / omega - 1.0), fit.amplitude, fit.beta, fit.rmsResidual,
                     static_cast<unsigned long long>(s.steps), static_cast<double>(s.pressureIterationsSum) / s.steps);
     } catch (const std::exception& e) {

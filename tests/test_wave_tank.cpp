@@ -5,7 +5,6 @@
 // minutes on this project's 2-core machine, far over the suite's budget, so they run only
 // with TIDE_LONG_TESTS=1 (otherwise they are skipped and say so). The short checks of the
 // same machinery (paddle, gauges, probes, damping, mass) are in test_wave_gauges.cpp.
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -63,8 +62,7 @@ FlumeRun runFlume(float spacing, float length, float dampingLength, const std::v
     if (const char* method = std::getenv("TIDE_WAVE_SOLVER")) solver.method = method;
     solver.soundSpeed = static_cast<float>(envOr("TIDE_WAVE_SOUND_SPEED", solver.soundSpeed));
     const float supportRatio = static_cast<float>(envOr("TIDE_WAVE_SUPPORT_RATIO", WorldDef{}.supportRatio));
-    // A periodic axis spans at least two kernel supports.
-    const int width = std::max(4, static_cast<int>(std::ceil(2.0f * supportRatio - 1e-4f)));
+    const int width = scenarios::periodicWidthInSpacings(supportRatio);
     World world = scenarios::waveFlume(spacing, length, paddle.depth, paddle, dampingLength,
                                        static_cast<int>(envOr("TIDE_WAVE_THREADS", 0)), width, solver, supportRatio);
     FlumeRun run;

@@ -2,6 +2,9 @@
 /// \file
 /// Scene builders shared by tests and benchmarks, so both measure the same setups.
 
+#include <algorithm>
+#include <cmath>
+
 #include <tide/world.hpp>
 
 namespace tide::scenarios {
@@ -17,6 +20,25 @@ inline World stillWater(float depth, float width, float spacing, int threads = 0
     World world(def);
     world.addMaterial(MaterialDef{});
     world.addBlock({{0.0f, 0.0f, 0.0f}, {width, depth, width}, {0.0f, 0.0f, 0.0f}, 0});
+    return world;
+}
+
+/// The narrowest periodic cell, in spacings, that a kernel support allows (two supports), and
+/// at least 4.
+inline int periodicWidthInSpacings(float supportRatio) {
+    return std::max(4, static_cast<int>(std::ceil(2.0f * supportRatio - 1e-4f)));
+}
+
+/// Still water `depth` deep in a tank `length` long and twice the depth high, walls across x;
+/// across z one periodic cell `widthInSpacings` spacings wide (2D), or with `closed` walls
+/// and a square floor. Spacing, support, gravity, solver and threads come from `def`.
+inline World stillTank(WorldDef def, float length, float depth, int widthInSpacings, bool closed = false) {
+    def.domainMin = {0.0f, 0.0f, 0.0f};
+    def.domainMax = {length, 2.0f * depth, closed ? length : static_cast<float>(widthInSpacings) * def.particleSpacing};
+    def.periodic = {false, false, !closed};
+    World world(def);
+    world.addMaterial(MaterialDef{});
+    world.addBlock({{0.0f, 0.0f, 0.0f}, {length, depth, def.domainMax.z}, {}, 0});
     return world;
 }
 

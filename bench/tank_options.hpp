@@ -1,0 +1,53 @@
+#pragma once
+/// \file
+/// Command-line options shared by the diagnostic tools on a tank of still water
+/// (tide_standing_wave, tide_rest_layers): the tank, the resolution and the solver settings,
+/// and the WorldDef they make.
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include <tide/defs.hpp>
+
+#include "testing/scenarios.hpp"
+
+namespace tide::bench {
+
+struct TankOptions {
+    std::string solver = "dfsph";
+    float spacing = 0.02f, supportRatio = WorldDef{}.supportRatio;
+    float length = 0.68f, depth = 0.3f;
+    float maxDensityError = SolverDef{}.maxDensityError, xsph = -1.0f, momentum = -1.0f;
+    int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows
+    int threads = 1;
+
+    void addTo(CLI::App& app) {
+        app.add_option("--solver", solver, "solver.method")->capture_default_str();
+        app.add_option("--spacing", spacing, "particle spacing, m")->capture_default_str()->check(CLI::PositiveNumber);
+        app.add_option("--support-ratio", supportRatio, "kernel support / spacing")->capture_default_str()->check(CLI::Range(1.0, 4.0));
+        app.add_option("--length", length, "tank length (x), m")->capture_default_str()->check(CLI::PositiveNumber);
+        app.add_option("--depth", depth, "water depth, m")->capture_default_str()->check(CLI::PositiveNumber);
+        app.add_option("--width", width, "periodic z cell in spacings (0: the narrowest the support allows, at least 4)");
+        app.add_option("--max-density-error", maxDensityError, "solver.max_density_error")->capture_default_str();
+        app.add_option("--xsph", xsph, "solver.xsph (negative: the solver's default)")->capture_default_str();
+        app.add_option("--momentum", momentum, "solver.momentum (negative: the solver's default)")->capture_default_str();
+        app.add_option("--threads", threads, "worker threads")->capture_default_str();
+    }
+    [[nodiscard]] int widthInSpacings() const {
+        return width > 0 ? width : scenarios::periodicWidthInSpacings(supportRatio);
+    }
+    [[nodiscard]] WorldDef worldDef() const {
+        WorldDef def;
+        def.particleSpacing = spacing;
+        def.supportRatio = supportRatio;
+        def.threads = threads;
+        def.solver.method = solver;
+        def.solver.maxDensityError = maxDensityError;
+        def.solver.xsph = xsph;
+        def.solver.momentum = momentum;
+        return def;
+    }
+};
+
+}  // namespace tide::bench
