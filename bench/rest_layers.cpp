@@ -3,7 +3,7 @@
 // speed of the particles in each layer one spacing thick from the floor up. The particles of
 // the cubic lattice the water starts on rearrange under the hydrostatic pressure from the
 // floor up, at a rate that grows with that pressure and with the kernel support
-// (docs/robustness.md § The tank at rest); this shows when and where.
+// (docs/robustness.md § Still water at fine spacings); this shows when and where.
 //
 //   tide_rest_layers [--solver dfsph] [--spacing 0.02] [--support-ratio 2] [--depth 0.3] ...
 #include <algorithm>
