@@ -8,6 +8,7 @@
 #include <cmath>
 #include <complex>
 #include <cstddef>
+#include <limits>
 #include <numbers>
 #include <utility>
 #include <vector>
@@ -100,6 +101,35 @@ inline Split incidentReflected(std::complex<double> a1, std::complex<double> a2,
     return {std::abs(incident), std::abs(reflected)};
 }
 
+namespace detail {
+/// The fit(p, q) with the least rmsResidual over [pLo, pHi] × [qLo, qHi]: a scan of
+/// (pSteps + 1) × (qSteps + 1) points (qSteps 0: q stays qLo), then coordinate steps halved
+/// whenever none improves (60 rounds), q kept ≥ qMin.
+template <class Fit>
+auto scanThenRefine(Fit fit, double pLo, double pHi, int pSteps, double qLo, double qHi, int qSteps, double qMin) {
+    auto best = fit(pLo, qLo);
+    double bestP = pLo, bestQ = qLo;
+    for (int iq = 0; iq <= qSteps; ++iq)
+        for (int ip = 0; ip <= pSteps; ++ip) {
+            const double p = pLo + (pHi - pLo) * ip / pSteps, q = qSteps > 0 ? qLo + (qHi - qLo) * iq / qSteps : qLo;
+            const auto f = fit(p, q);
+            if (f.rmsResidual < best.rmsResidual) best = f, bestP = p, bestQ = q;
+        }
+    double dp = (pHi - pLo) / pSteps, dq = qSteps > 0 ? (qHi - qLo) / qSteps : 0.0;
+    for (int round = 0; round < 60; ++round) {
+        bool moved = false;
+        for (const auto& [sp, sq] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
+            if (sq != 0 && qSteps == 0) continue;
+            const double p = bestP + sp * dp, q = std::max(qMin, bestQ + sq * dq);
+            const auto f = fit(p, q);
+            if (f.rmsResidual < best.rmsResidual) best = f, bestP = p, bestQ = q, moved = true;
+        }
+        if (!moved) dp *= 0.5, dq *= 0.5;
+    }
+    return best;
+}
+}  // namespace detail
+
 /// Incident and reflected waves and the wave number itself, from N ≥ 3 gauges at x_j along
 /// the flume: the least-squares fit of A_j = I e^{−κ x_j} + R e^{κ x_j}, κ = α + ik, over all
 /// gauges — the method of Mansard & Funke 1980 ("The measurement of incident and reflected
@@ -139,26 +169,8 @@ inline FlumeFit fitAt(const std::vector<double>& x, const std::vector<std::compl
 }  // namespace detail
 inline FlumeFit fitIncidentReflected(const std::vector<double>& x, const std::vector<std::complex<double>>& a, double kLo,
                                      double kHi, double alphaLo = 0.0, double alphaHi = 0.0) {
-    constexpr int kSteps = 400, alphaSteps = 40;
-    FlumeFit best = detail::fitAt(x, a, kLo, alphaLo);
-    const bool withAlpha = alphaHi > alphaLo;
-    for (int ia = 0; ia <= (withAlpha ? alphaSteps : 0); ++ia)
-        for (int ik = 0; ik <= kSteps; ++ik) {
-            const FlumeFit f = detail::fitAt(x, a, kLo + (kHi - kLo) * ik / kSteps,
-                                             alphaLo + (alphaHi - alphaLo) * ia / alphaSteps);
-            if (f.rmsResidual < best.rmsResidual) best = f;
-        }
-    double dk = (kHi - kLo) / kSteps, da = withAlpha ? (alphaHi - alphaLo) / alphaSteps : 0.0;
-    for (int round = 0; round < 60; ++round) {
-        bool moved = false;
-        for (const auto& [sk, sa] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-            if (sa != 0 && !withAlpha) continue;
-            const FlumeFit f = detail::fitAt(x, a, best.k + sk * dk, best.alpha + sa * da);
-            if (f.rmsResidual < best.rmsResidual) best = f, moved = true;
-        }
-        if (!moved) dk *= 0.5, da *= 0.5;
-    }
-    return best;
+    return detail::scanThenRefine([&](double k, double alpha) { return detail::fitAt(x, a, k, alpha); }, kLo, kHi, 400,
+                                  alphaLo, alphaHi, alphaHi > alphaLo ? 40 : 0, -std::numeric_limits<double>::infinity());
 }
 
 /// A damped oscillation η(t) ≈ e^(−βt)(A sin ωt + B cos ωt) + C fitted by least squares
@@ -205,23 +217,8 @@ inline DampedFit fitDampedAt(const Record& r, double omega, double beta) {
 }
 }  // namespace detail
 inline DampedFit fitDampedOscillation(const Record& r, double omegaLo, double omegaHi, double betaHi = 1.0) {
-    constexpr int omegaSteps = 300, betaSteps = 20;
-    DampedFit best = detail::fitDampedAt(r, omegaLo, 0.0);
-    for (int ib = 0; ib <= betaSteps; ++ib)
-        for (int iw = 0; iw <= omegaSteps; ++iw) {
-            const DampedFit f = detail::fitDampedAt(r, omegaLo + (omegaHi - omegaLo) * iw / omegaSteps, betaHi * ib / betaSteps);
-            if (f.rmsResidual < best.rmsResidual) best = f;
-        }
-    double dw = (omegaHi - omegaLo) / omegaSteps, db = betaHi / betaSteps;
-    for (int round = 0; round < 60; ++round) {
-        bool moved = false;
-        for (const auto& [sw, sb] : {std::pair{1, 0}, std::pair{-1, 0}, std::pair{0, 1}, std::pair{0, -1}}) {
-            const DampedFit f = detail::fitDampedAt(r, best.omega + sw * dw, std::max(0.0, best.beta + sb * db));
-            if (f.rmsResidual < best.rmsResidual) best = f, moved = true;
-        }
-        if (!moved) dw *= 0.5, db *= 0.5;
-    }
-    return best;
+    return detail::scanThenRefine([&](double omega, double beta) { return detail::fitDampedAt(r, omega, beta); }, omegaLo,
+                                  omegaHi, 300, 0.0, betaHi, 20, 0.0);
 }
 
 }  // namespace tide::waves
