@@ -3,7 +3,8 @@
 # quiet when everything is present.
 set -euo pipefail
 
-# build: compiler, CMake, GLM, JSON, CLI11, tinyobjloader (OBJ obstacle meshes); tests: GoogleTest,
+# build: compiler, CMake, GLM, JSON, CLI11, tinyobjloader (OBJ obstacle meshes), Highway (SIMD
+# with run-time dispatch); tests: GoogleTest,
 # meshio (reads our VTU frames), jsonschema (checks scenes against their schema), script (a
 # pseudo-terminal); benchmarks: Google Benchmark.
 # Viewer and `tide render`: GLFW, GLEW, Dear ImGui (with its GLFW/OpenGL3 backends) and stb (PNG,
@@ -11,7 +12,7 @@ set -euo pipefail
 # ffmpeg for `tide render --video`; the viewer's test: Xvfb and xwd (x11-apps).
 # `make check-sanitizers`: clang with its sanitizer and libFuzzer runtimes (libclang-rt-14-dev),
 # LLVM's OpenMP (libomp-dev, whose Archer tool makes TSan understand OpenMP), llvm-symbolizer (llvm).
-packages=(cmake make g++ libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libgtest-dev libgmock-dev
+packages=(cmake make g++ libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libhwy-dev libgtest-dev libgmock-dev
           libbenchmark-dev python3-meshio python3-jsonschema bsdutils
           libglfw3-dev libglew-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libglx-mesa0 libgl1-mesa-dri
           ffmpeg xvfb x11-apps

@@ -127,23 +127,16 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
     });
 }
 
-// The pair loops below accumulate into separate floats rather than a glm::vec3: GCC keeps
-// a vec3's third lane on the stack, a store-load chain through every iteration.
+// The iterations' fluid pair sums run in SIMD lanes (solvers/pair_sums.hpp); the wall
+// loops, which only particles near walls take, stay scalar.
 
-template <class PairVector>
-float DfsphBender2017::densityRate(const StepContext& ctx, PairVector delta, std::uint32_t i) const {
+float DfsphBender2017::densityRate(const StepContext& ctx, std::uint32_t i) const {
     const ParticleStore& p = ctx.particles;
     const glm::vec3 xi = p.position[i];
     const glm::vec3 vi = p.velocity[i];
-    float rate = 0.0f;  // in units of PairKernels::unit(), scaled once below
-    const auto neighbors = ctx.neighbors.of(i);
-    const PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
-    for (std::size_t k = 0; k < neighbors.size(); ++k) {
-        const std::uint32_t j = neighbors[k];
-        const glm::vec4 xj = positionMass_[j];
-        rate += (xj.w * PairKernels::magnitude(f[k])) * glm::dot(vi - p.velocity[j], delta(xi, glm::vec3(xj)));
-    }
-    rate = fluidF_.unit() * rate;
+    // Σ_j m_j (v_i − v_j)·∇W_ij, in units of PairKernels::unit()
+    float rate = fluidF_.unit() * pair_sums::divergenceSum(fluidPairs(ctx, i), positionMass_.data(), p.velocity,
+                                                          xi, vi, ctx.periodic, pairOrder());
     if (!contrast_.uniform()) rate *= p.mass[i];  // m_i Σ_j v_ij·∇W_ij: Dρ_i/Dt of ρ_i = m_i δ_i
     // Walls: Σ_b Ψ_b (v_i − v_b)·∇W_ib, the v_b part kept from computeAlpha.
     const float wall = ctx.boundary.moving ? glm::dot(vi, wallGradient_[i]) - wallVelocityRate_[i]
@@ -155,12 +148,8 @@ template <class PairVector>
 float DfsphBender2017::predictedDensity(const StepContext& ctx, PairVector delta, const kernels::CubicSpline& w,
                                         std::uint32_t i) const {
     const glm::vec3 xi(positionK_[i]);
-    float rho = positionK_[i].w * w.value(0.0f);
-    for (const std::uint32_t j : ctx.neighbors.of(i)) {
-        const glm::vec4 xj = positionK_[j];
-        const glm::vec3 r = delta(xi, glm::vec3(xj));
-        rho += xj.w * w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
-    }
+    float rho = pair_sums::kernelSum(fluidPairs(ctx, i), positionK_.data(), xi, w, ctx.periodic,
+                                     positionK_[i].w * w.value(0.0f), pairOrder());
     if (!contrast_.uniform()) rho *= ctx.particles.mass[i];  // m_i δ*_i
     float volume = 0.0f;
     const glm::vec3* wallX = ctx.boundary.moving ? wallMoved_.data() : ctx.boundary.position.data();
@@ -185,19 +174,8 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
             // Σ_j (k_i m_i/ρ_i + k_j (m_j/m_i) m_j/ρ_j) ∇W_ij = (k_i/ρ_i) m_i Σ_j ∇W_ij + (1/m_i) Σ_j (m_j² k_j/ρ_j) ∇W_ij
-            float x = 0.0f, y = 0.0f, z = 0.0f;  // in units of PairKernels::unit(), scaled once below
-            const auto neighbors = ctx.neighbors.of(i);
-            const PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
-            for (std::size_t k = 0; k < neighbors.size(); ++k) {
-                const glm::vec4 xj = positionK_[neighbors[k]];
-                const glm::vec3 r = delta(xi, glm::vec3(xj));
-                const float s = xj.w * PairKernels::magnitude(f[k]);
-                x += s * r.x;
-                y += s * r.y;
-                z += s * r.z;
-            }
             const float unit = uniform ? fluidF_.unit() : fluidF_.unit() / p.mass[i];
-            const glm::vec3 sum = unit * glm::vec3(x, y, z);
+            const glm::vec3 sum = unit * pair_sums::gradientSum(fluidPairs(ctx, i), positionK_.data(), xi, ctx.periodic, pairOrder());
             const glm::vec3 dv = (k_[i] / p.density[i]) * fluidGradient_[i] + sum;
             // Σ_b Ψ_b (κ_i/ρ_i + κ_b/ρ_b) ∇W_ib with Ψ_b = ρ0 V_b, ρ_b = ρ_i; κ_b = κ_i when mirrored.
             const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
@@ -245,11 +223,9 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
     applyPressure(ctx, {});
     int iteration = 0;
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
-        withPairVector(ctx.periodic, [&](auto delta) {
-            parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-                const bool interior = ctx.neighbors.of(i).size() + ctx.boundaryNeighbors.of(i).size() >= kMinNeighborsForDivergence;
-                source_[i] = interior ? std::max(densityRate(ctx, delta, i), 0.0f) : 0.0f;  // only compression
-            });
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+            const bool interior = ctx.neighbors.of(i).size() + ctx.boundaryNeighbors.of(i).size() >= kMinNeighborsForDivergence;
+            source_[i] = interior ? std::max(densityRate(ctx, i), 0.0f) : 0.0f;  // only compression
         });
         // Mean relative compression rate, over the last step's length.
         if (iteration >= ctx.solver.minIterations && meanRelativeSource(ctx) * lastDt_ <= ctx.solver.maxDensityError)

@@ -27,6 +27,7 @@
 #include "core/kernels.hpp"
 #include "solvers/density_contrast_solenthaler2008.hpp"
 #include "solvers/pair_kernels.hpp"
+#include "solvers/pair_sums.hpp"
 #include "solvers/solver.hpp"
 #include "solvers/xsph_monaghan1989.hpp"
 
@@ -48,9 +49,21 @@ private:
     /// Densities, kernel factors of this step's pairs and the packed positions the iterations read.
     void prepare(StepContext& ctx);
     void computeAlpha(StepContext& ctx);
+    /// i's fluid neighbours with their coded gradient factors, as the SIMD pair sums read them.
+    [[nodiscard]] pair_sums::Neighbors fluidPairs(const StepContext& ctx, std::uint32_t i) const {
+        const auto neighbors = ctx.neighbors.of(i);
+        return {neighbors.data(), fluidF_.of(ctx.neighbors, i).data(), neighbors.size()};
+    }
+    /// SIMD lanes for one rest density. With several, the sums keep the scalar loops' order:
+    /// the 5:1 column drop of tests/test_multifluid.cpp clumps pairs of light particles at
+    /// its surface (0.3 spacings apart by 0.088 s) and runs into a density solve that does
+    /// not converge at 0.088 s whichever the order; with the lanes' rounding (AVX2, AVX-512)
+    /// the retaken steps then diverge, with the scalar or SSE4 rounding they recover.
+    [[nodiscard]] pair_sums::Order pairOrder() const {
+        return contrast_.uniform() ? pair_sums::Order::Lanes : pair_sums::Order::Sequential;
+    }
     /// Σ_j m_j (v_i − v_j)·∇W_ij + Σ_b Ψ_b (v_i − v_b)·∇W_ib: the rate of change of ρ_i.
-    template <class PairVector>
-    [[nodiscard]] float densityRate(const StepContext& ctx, PairVector delta, std::uint32_t i) const;
+    [[nodiscard]] float densityRate(const StepContext& ctx, std::uint32_t i) const;
     /// ρ*_i: the density at the predicted positions positionK_ holds (x + Δt v), over this step's
     /// neighbours. The paper linearises it, ρ_i + Δt Dρ_i/Dt (eq. 9); the kernel is convex where
     /// neighbours close in, so the linear guess misses up to 90 % of the tolerance at CFL 0.4

@@ -14,6 +14,7 @@
 #include "core/kernels.hpp"
 #include "core/scratch_resize.hpp"
 #include "neighbors/neighbor_list.hpp"
+#include "solvers/pair_sums.hpp"
 
 namespace tide {
 
@@ -30,9 +31,10 @@ public:
     using Code = std::uint16_t;
 
     /// Room for one value per pair of `list` (the values of the last list are lost), for
-    /// the kernel `w`.
+    /// the kernel `w`, and pair_sums::kPadding zeros after them for the SIMD sums (pair_sums.hpp).
     void resize(const NeighborList& list, const kernels::CubicSpline& w) {
-        resizeScratch(values_, list.pairCount());
+        resizeScratch(values_, list.pairCount() + pair_sums::kPadding);
+        std::fill(values_.end() - pair_sums::kPadding, values_.end(), Code{0});
         unit_ = -12.0f * w.sigma * w.invH * w.invH;
         invUnit_ = 1.0f / unit_;
     }
@@ -64,9 +66,12 @@ public:
     /// The factor F a code stands for.
     [[nodiscard]] float factor(Code code) const { return unit_ * magnitude(code); }
 
-private:
+    /// The code's layout (public for the SIMD decode in pair_sums.cpp): a code c ≠ 0 stands
+    /// for the float with bits (c + (kLowestExponent << kMantissaBits)) << kDropped.
     static constexpr unsigned kMantissaBits = 11, kDropped = 23 - kMantissaBits;
     static constexpr std::uint32_t kLowestExponent = 127 - 31;  ///< biased exponent of 2⁻³¹
+
+private:
     static constexpr float kSmallest = 0x1p-31f;
     std::vector<Code> values_;
     float unit_ = 0.0f, invUnit_ = 0.0f;  ///< −12σ/h², and its inverse

@@ -1,0 +1,58 @@
+#pragma once
+/// \file
+/// The pair sums of the pressure solves' inner loops, over one particle's neighbour list,
+/// eight neighbours at a time in SIMD lanes (Google Highway, chosen at run time: AVX-512,
+/// AVX2, SSE4 or plain code, so one portable binary uses what the CPU has).
+///
+/// Each sum reads neighbour j's position and a per-neighbour weight packed as a vec4
+/// (x_j, w_j), loaded by index. The lanes add in a fixed order for a given CPU, so
+/// results stay the same for any thread count; AVX2 and AVX-512 machines run the same
+/// eight lanes and agree bit for bit, while SSE4 and plain code round differently.
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/kernels.hpp"
+#include "core/periodic_box.hpp"
+
+namespace tide::pair_sums {
+
+/// How far past a list's end its codes are read (and ignored): arrays of codes hold this
+/// many more after their last list.
+inline constexpr std::size_t kPadding = 8;
+
+/// One particle's neighbours: indices into the loaded arrays and, where a sum needs them,
+/// the pairs' coded gradient factors (PairKernels::Code, aligned with the indices; readable
+/// kPadding past the last).
+struct Neighbors {
+    const std::uint32_t* index = nullptr;
+    const std::uint16_t* code = nullptr;
+    std::size_t count = 0;
+};
+
+/// How a sum adds its terms.
+enum class Order {
+    Lanes,       ///< in the SIMD lanes, then across them
+    Sequential,  ///< one pair at a time in list order: the rounding of the scalar loops
+};
+
+/// initial + Σ_j w_j W(|x_i − x_j|) of the cubic spline `w`, with (x_j, w_j) = points[j].
+float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                const kernels::CubicSpline& w, const PeriodicBox& box, float initial = 0.0f, Order order = Order::Lanes);
+
+/// Σ_j w_j m_ij (x_i − x_j), with m_ij = PairKernels::magnitude(code_ij).
+glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                      const PeriodicBox& box, Order order = Order::Lanes);
+
+/// Σ_j w_j m_ij (v_i − v_j)·(x_i − x_j), with m_ij as above.
+float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, std::span<const glm::vec3> velocities,
+                    const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box, Order order = Order::Lanes);
+
+/// The instruction set the sums run on here (e.g. "AVX2"), for reports.
+const char* instructionSet();
+
+}  // namespace tide::pair_sums

@@ -1,0 +1,116 @@
+// The pressure solves' SIMD pair sums (solvers/pair_sums.hpp) against the same sums in
+// double precision, for lists of every length around the lane count (the lanes past a list's
+// end must add nothing), with the array's last particle among the neighbours (its velocity
+// is read from a copy), and across a periodic axis.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "core/kernels.hpp"
+#include "core/periodic_box.hpp"
+#include "solvers/pair_kernels.hpp"
+#include "solvers/pair_sums.hpp"
+
+namespace {
+
+using namespace tide;
+
+struct Cloud {
+    std::vector<glm::vec4> points;  ///< (x, w)
+    std::vector<glm::vec3> velocities;
+};
+
+Cloud randomCloud(std::size_t n, float size, unsigned seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> position(0.0f, size), weight(0.5f, 2.0f), speed(-1.0f, 1.0f);
+    Cloud cloud;
+    for (std::size_t i = 0; i < n; ++i) {
+        cloud.points.emplace_back(position(random), position(random), position(random), weight(random));
+        cloud.velocities.emplace_back(speed(random), speed(random), speed(random));
+    }
+    return cloud;
+}
+
+/// Checks the three sums for particle i over the first `count` of `candidates` (the same for
+/// every count, so each length 0 … candidates.size() is covered).
+void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std::uint32_t>& candidates,
+                     const kernels::CubicSpline& w, const PeriodicBox& box) {
+    const glm::vec3 xi(cloud.points[i]);
+    const glm::vec3 vi = cloud.velocities[i];
+    PairKernels factors;
+    std::vector<PairKernels::Code> codes;
+    for (const std::uint32_t j : candidates) {
+        const glm::vec3 r = box.delta(xi, glm::vec3(cloud.points[j]));
+        codes.push_back(factors.encode(w, glm::length(r)));
+    }
+    codes.resize(codes.size() + pair_sums::kPadding, 0xFFFF);  // read past the end: must not count
+    for (std::size_t count = 0; count <= candidates.size(); ++count) {
+        const pair_sums::Neighbors neighbors{candidates.data(), codes.data(), count};
+        double kernel = 0.0, kernelScale = 0.0, divergence = 0.0, divergenceScale = 0.0;
+        glm::dvec3 gradient(0.0), gradientScale(0.0);
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::uint32_t j = candidates[k];
+            const glm::dvec3 r(box.delta(xi, glm::vec3(cloud.points[j])));
+            const double wj = cloud.points[j].w, m = PairKernels::magnitude(codes[k]);
+            const double value = wj * w.value(static_cast<float>(glm::length(r)));
+            kernel += value;
+            kernelScale += std::abs(value);
+            gradient += wj * m * r;
+            gradientScale += glm::abs(wj * m * r);
+            const double rate = wj * m * glm::dot(glm::dvec3(vi - cloud.velocities[j]), r);
+            divergence += rate;
+            divergenceScale += std::abs(rate);
+        }
+        for (const auto order : {pair_sums::Order::Lanes, pair_sums::Order::Sequential}) {
+            const float initial = 0.25f;
+            EXPECT_NEAR(pair_sums::kernelSum(neighbors, cloud.points.data(), xi, w, box, initial, order), initial + kernel,
+                        1e-5 * (kernelScale + initial))
+                << count << " neighbours";
+            const glm::vec3 g = pair_sums::gradientSum(neighbors, cloud.points.data(), xi, box, order);
+            for (int axis = 0; axis < 3; ++axis)
+                EXPECT_NEAR(g[axis], gradient[axis], 1e-5 * gradientScale[axis] + 1e-12) << count << " neighbours";
+            EXPECT_NEAR(pair_sums::divergenceSum(neighbors, cloud.points.data(), cloud.velocities, xi, vi, box, order),
+                        divergence, 1e-5 * divergenceScale + 1e-12)
+                << count << " neighbours";
+        }
+    }
+}
+
+TEST(PairSums, MatchTheSumsInDoubleForEveryListLength) {
+    std::printf("pair sums run on %s\n", pair_sums::instructionSet());
+    const float h = 0.04f;
+    const kernels::CubicSpline w(h);
+    const Cloud cloud = randomCloud(400, 2.0f * h, 7);
+    const PeriodicBox none;
+    // Particle 0's neighbours within the support, the array's last particle first.
+    const auto last = static_cast<std::uint32_t>(cloud.points.size() - 1);
+    std::vector<std::uint32_t> candidates{last};
+    for (std::uint32_t j = 1; j < last && candidates.size() < 21; ++j)
+        if (glm::length(glm::vec3(cloud.points[j]) - glm::vec3(cloud.points[0])) < h) candidates.push_back(j);
+    ASSERT_EQ(candidates.size(), 21u);
+    expectSumsMatch(cloud, 0, candidates, w, none);
+}
+
+TEST(PairSums, TakeTheNearestImageAcrossAPeriodicAxis) {
+    const float h = 0.04f, size = 0.2f;
+    const kernels::CubicSpline w(h);
+    Cloud cloud = randomCloud(300, size, 11);
+    const PeriodicBox box = PeriodicBox::make({0, 0, 0}, {size, size, size}, {true, false, true});
+    cloud.points[0] = glm::vec4(0.005f, 0.1f, 0.195f, 1.0f);  // at a corner of the periodic faces
+    std::vector<std::uint32_t> candidates;
+    for (std::uint32_t j = 1; j < cloud.points.size(); ++j)
+        if (glm::length(box.delta(glm::vec3(cloud.points[0]), glm::vec3(cloud.points[j]))) < h) candidates.push_back(j);
+    std::size_t across = 0;  // neighbours that are only near through the periodic faces
+    for (const std::uint32_t j : candidates)
+        across += glm::length(glm::vec3(cloud.points[0]) - glm::vec3(cloud.points[j])) >= h;
+    ASSERT_GE(across, 3u);
+    expectSumsMatch(cloud, 0, candidates, w, box);
+}
+
+}  // namespace
