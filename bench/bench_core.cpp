@@ -9,6 +9,8 @@
 
 #include "neighbors/neighbor_list.hpp"
 #include "neighbors/uniform_grid.hpp"
+#include "solvers/pair_kernels.hpp"
+#include "solvers/pair_sums.hpp"
 #include "testing/scenarios.hpp"
 
 namespace {
@@ -32,6 +34,50 @@ void BM_NeighborSearch(benchmark::State& state) {
     state.counters["particles"] = static_cast<double>(x.size());
     state.counters["neighbours"] = static_cast<double>(list.pairCount()) / static_cast<double>(x.size());
     state.counters["threads"] = world.threads();
+}
+
+/// The pressure solves' pair sums (solvers/pair_sums.hpp) over every particle of the 50k dam
+/// break's column after one step, one thread: ns per pair, in SIMD lanes (arg 0) or one pair
+/// at a time (arg 1). Which sum: 0 kernel (density), 1 gradient (pressure), 2 divergence.
+void BM_PairSums(benchmark::State& state) {
+    tide::World world = tide::scenarios::damBreak(spacingFor(50000));
+    world.step(1.0);
+    const auto& x = world.particles().position;
+    const auto& v = world.particles().velocity;
+    const float h = world.supportRadius();
+    const tide::kernels::CubicSpline w(h);
+    tide::UniformGrid grid;
+    tide::NeighborList list;
+    grid.build(x, h, 1);
+    list.build(grid, x, h, 1);
+    tide::PairKernels factors;
+    factors.resize(list, w);
+    std::vector<glm::vec4> points(x.size()), velocities(x.size());
+    for (std::uint32_t i = 0; i < x.size(); ++i) {
+        points[i] = glm::vec4(x[i], 1.0f);
+        velocities[i] = glm::vec4(v[i], 0.0f);
+        auto codes = factors.of(list, i);
+        const auto neighbors = list.of(i);
+        for (std::size_t k = 0; k < neighbors.size(); ++k) codes[k] = factors.encode(w, glm::length(x[i] - x[neighbors[k]]));
+    }
+    const auto order = state.range(0) == 0 ? tide::pair_sums::Order::Lanes : tide::pair_sums::Order::Sequential;
+    const auto sum = state.range(1);
+    const tide::PeriodicBox box;
+    float total = 0.0f;
+    for (auto _ : state) {
+        for (std::uint32_t i = 0; i < x.size(); ++i) {
+            const auto neighbors = list.of(i);
+            const tide::pair_sums::Neighbors pairs{neighbors.data(), factors.of(list, i).data(), neighbors.size()};
+            if (sum == 0) total += tide::pair_sums::kernelSum(pairs, points.data(), x[i], w, box, 0.0f, order);
+            else if (sum == 1) total += tide::pair_sums::gradientSum(pairs, points.data(), x[i], box, order).x;
+            else total += tide::pair_sums::divergenceSum(pairs, points.data(), velocities.data(), x[i], v[i], box, order);
+        }
+    }
+    benchmark::DoNotOptimize(total);
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(list.pairCount()));
+    state.counters["ns_per_pair"] = benchmark::Counter(static_cast<double>(state.iterations() * list.pairCount()),
+                                                       benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+    state.SetLabel(state.range(0) == 0 ? tide::pair_sums::instructionSet() : "sequential");
 }
 
 /// The first kSteps steps of a dam break after release, per solver: particle-steps per
@@ -69,6 +115,7 @@ constexpr char kWcsph[] = "wcsph";
 constexpr char kPcisph[] = "pcisph";
 constexpr char kDfsph[] = "dfsph";
 
+BENCHMARK(BM_PairSums)->ArgsProduct({{0, 1}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_NeighborSearch)->Arg(50000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DamBreak<kClassic>)->Name("BM_DamBreak/classic")->Arg(50000)->Arg(200000)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 BENCHMARK(BM_DamBreak<kWcsph>)->Name("BM_DamBreak/wcsph")->Arg(50000)->Arg(200000)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();

@@ -1,7 +1,6 @@
 // The pressure solves' SIMD pair sums (solvers/pair_sums.hpp) against the same sums in
 // double precision, for lists of every length around the lane count (the lanes past a list's
-// end must add nothing), with the array's last particle among the neighbours (its velocity
-// is read from a copy), and across a periodic axis.
+// end must add nothing, whatever indices and codes follow it), and across a periodic axis.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -23,7 +22,7 @@ using namespace tide;
 
 struct Cloud {
     std::vector<glm::vec4> points;  ///< (x, w)
-    std::vector<glm::vec3> velocities;
+    std::vector<glm::vec4> velocities;  ///< (v, 0)
 };
 
 Cloud randomCloud(std::size_t n, float size, unsigned seed) {
@@ -32,7 +31,7 @@ Cloud randomCloud(std::size_t n, float size, unsigned seed) {
     Cloud cloud;
     for (std::size_t i = 0; i < n; ++i) {
         cloud.points.emplace_back(position(random), position(random), position(random), weight(random));
-        cloud.velocities.emplace_back(speed(random), speed(random), speed(random));
+        cloud.velocities.emplace_back(speed(random), speed(random), speed(random), 0.0f);
     }
     return cloud;
 }
@@ -42,16 +41,20 @@ Cloud randomCloud(std::size_t n, float size, unsigned seed) {
 void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std::uint32_t>& candidates,
                      const kernels::CubicSpline& w, const PeriodicBox& box) {
     const glm::vec3 xi(cloud.points[i]);
-    const glm::vec3 vi = cloud.velocities[i];
+    const glm::vec3 vi(cloud.velocities[i]);
     PairKernels factors;
     std::vector<PairKernels::Code> codes;
     for (const std::uint32_t j : candidates) {
         const glm::vec3 r = box.delta(xi, glm::vec3(cloud.points[j]));
         codes.push_back(factors.encode(w, glm::length(r)));
     }
-    codes.resize(codes.size() + pair_sums::kPadding, 0xFFFF);  // read past the end: must not count
+    // Read past the end (they must not count): near neighbours' indices with codes of the
+    // largest factor.
+    std::vector<std::uint32_t> indices = candidates;
+    indices.resize(indices.size() + pair_sums::kPadding, candidates.front());
+    codes.resize(codes.size() + pair_sums::kPadding, 0xFFFF);
     for (std::size_t count = 0; count <= candidates.size(); ++count) {
-        const pair_sums::Neighbors neighbors{candidates.data(), codes.data(), count};
+        const pair_sums::Neighbors neighbors{indices.data(), codes.data(), count};
         double kernel = 0.0, kernelScale = 0.0, divergence = 0.0, divergenceScale = 0.0;
         glm::dvec3 gradient(0.0), gradientScale(0.0);
         for (std::size_t k = 0; k < count; ++k) {
@@ -63,7 +66,7 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
             kernelScale += std::abs(value);
             gradient += wj * m * r;
             gradientScale += glm::abs(wj * m * r);
-            const double rate = wj * m * glm::dot(glm::dvec3(vi - cloud.velocities[j]), r);
+            const double rate = wj * m * glm::dot(glm::dvec3(vi - glm::vec3(cloud.velocities[j])), r);
             divergence += rate;
             divergenceScale += std::abs(rate);
         }
@@ -75,7 +78,7 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
             const glm::vec3 g = pair_sums::gradientSum(neighbors, cloud.points.data(), xi, box, order);
             for (int axis = 0; axis < 3; ++axis)
                 EXPECT_NEAR(g[axis], gradient[axis], 1e-5 * gradientScale[axis] + 1e-12) << count << " neighbours";
-            EXPECT_NEAR(pair_sums::divergenceSum(neighbors, cloud.points.data(), cloud.velocities, xi, vi, box, order),
+            EXPECT_NEAR(pair_sums::divergenceSum(neighbors, cloud.points.data(), cloud.velocities.data(), xi, vi, box, order),
                         divergence, 1e-5 * divergenceScale + 1e-12)
                 << count << " neighbours";
         }
@@ -88,10 +91,9 @@ TEST(PairSums, MatchTheSumsInDoubleForEveryListLength) {
     const kernels::CubicSpline w(h);
     const Cloud cloud = randomCloud(400, 2.0f * h, 7);
     const PeriodicBox none;
-    // Particle 0's neighbours within the support, the array's last particle first.
-    const auto last = static_cast<std::uint32_t>(cloud.points.size() - 1);
-    std::vector<std::uint32_t> candidates{last};
-    for (std::uint32_t j = 1; j < last && candidates.size() < 21; ++j)
+    // 21 of particle 0's neighbours within the support.
+    std::vector<std::uint32_t> candidates;
+    for (std::uint32_t j = 1; j < cloud.points.size() && candidates.size() < 21; ++j)
         if (glm::length(glm::vec3(cloud.points[j]) - glm::vec3(cloud.points[0])) < h) candidates.push_back(j);
     ASSERT_EQ(candidates.size(), 21u);
     expectSumsMatch(cloud, 0, candidates, w, none);

@@ -88,11 +88,13 @@ void NeighborList::linkChunks(int chunks, int threads, ForEachParticleOfChunk&& 
     chunkBase_.assign(static_cast<std::size_t>(chunks) + 1, 0);
     chunkData_.resize(static_cast<std::size_t>(chunks));
     for (int c = 0; c < chunks; ++c) {
-        const std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
+        std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
         // start_ is 32-bit: a chunk of 2^32 pairs (16 GiB of indices) would need more.
         if (buffer.size() > std::numeric_limits<std::uint32_t>::max())
             throw std::length_error("NeighborList: more than 2^32 pairs in one chunk");
         chunkBase_[c + 1] = chunkBase_[c] + buffer.size();
+        reserveGrowing(buffer, buffer.size() + kReadPast);
+        buffer.resize(buffer.size() + kReadPast, 0u);  // not pairs: room to read past the last list
         chunkData_[static_cast<std::size_t>(c)] = buffer.data();
     }
     pairs_ = chunkBase_[chunks];

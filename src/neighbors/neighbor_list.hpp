@@ -40,6 +40,10 @@ public:
                     std::span<const glm::vec3> queries, float radius, int threads,
                     std::span<const std::uint32_t> queryIndices = {});
 
+    /// Every list may be read this many indices past its end (SIMD loops read whole blocks):
+    /// they are indices of the same set, the next lists' or 0 after a chunk's last.
+    static constexpr std::size_t kReadPast = 8;
+
     [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const {
         return {chunkData_[count_[i] >> kCountBits] + start_[i], count_[i] & kCountMask};
     }

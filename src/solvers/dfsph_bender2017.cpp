@@ -135,7 +135,7 @@ float DfsphBender2017::densityRate(const StepContext& ctx, std::uint32_t i) cons
     const glm::vec3 xi = p.position[i];
     const glm::vec3 vi = p.velocity[i];
     // Σ_j m_j (v_i − v_j)·∇W_ij, in units of PairKernels::unit()
-    float rate = fluidF_.unit() * pair_sums::divergenceSum(fluidPairs(ctx, i), positionMass_.data(), p.velocity,
+    float rate = fluidF_.unit() * pair_sums::divergenceSum(fluidPairs(ctx, i), positionMass_.data(), positionK_.data(),
                                                           xi, vi, ctx.periodic, pairOrder());
     if (!contrast_.uniform()) rate *= p.mass[i];  // m_i Σ_j v_ij·∇W_ij: Dρ_i/Dt of ρ_i = m_i δ_i
     // Walls: Σ_b Ψ_b (v_i − v_b)·∇W_ib, the v_b part kept from computeAlpha.
@@ -220,7 +220,13 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
         k_[i] = kWarmStart * p.warmDivergence[i];
         divergenceK_[i] = k_[i];
     });
-    applyPressure(ctx, {});
+    // Applies k_, then packs the velocities as (v_j, 0) rows into positionK_ (free until the
+    // next applyPressure) for densityRate's SIMD loads.
+    auto push = [&] {
+        applyPressure(ctx, {});
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) { positionK_[i] = glm::vec4(p.velocity[i], 0.0f); });
+    };
+    push();
     int iteration = 0;
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -237,7 +243,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             k_[i] = weight * source_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
             divergenceK_[i] += k_[i];
         });
-        applyPressure(ctx, {});
+        push();
     }
     return iteration;
 }

@@ -2,9 +2,7 @@
 // foreach_target (this file includes itself once per target) and dispatched at run time.
 #include "solvers/pair_sums.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <cstring>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -53,13 +51,13 @@ glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const
 }
 
 template <bool Periodic>
-float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3* velocities,
+float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     float sum = 0.0f;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
         const std::uint32_t j = neighbors.index[k];
         const glm::vec4 xj = points[j];
-        sum += (xj.w * PairKernels::magnitude(neighbors.code[k])) * glm::dot(vi - velocities[j], delta<Periodic>(xi, xj, box));
+        sum += (xj.w * PairKernels::magnitude(neighbors.code[k])) * glm::dot(vi - glm::vec3(velocities[j]), delta<Periodic>(xi, xj, box));
     }
     return sum;
 }
@@ -90,8 +88,8 @@ glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, cons
     return sequential::gradientSum<Periodic>(neighbors, points, xi, box);
 }
 template <bool Periodic>
-float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3* velocities,
-                     std::size_t /*count*/, const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
+float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     return sequential::divergenceSum<Periodic>(neighbors, points, velocities, xi, vi, box);
 }
 
@@ -104,7 +102,6 @@ using DU = hn::RebindToUnsigned<D>;
 using DU16 = hn::Rebind<std::uint16_t, D>;
 using V = hn::Vec<D>;
 
-constexpr std::size_t kMaxLanes = 8;
 static_assert(hn::MaxLanes(D()) == 4 || hn::MaxLanes(D()) == 8, "rows of four floats fill 4 or 8 lanes");
 
 /// PairKernels::magnitude of the codes of neighbours k …; 0 past the list's end (the codes
@@ -167,26 +164,17 @@ HWY_INLINE Columns Transpose(Row row) {
             hn::BitCast(d, hn::InterleaveUpper(dd, hn::BitCast(dd, zw01), hn::BitCast(dd, zw23)))};
 }
 
-// Lanes past a list's end read its last neighbour again (and the sums zero their terms):
-// no branch on where the list ends but the loop's own, which the scalar loop had too. A
-// branch to a tail block mispredicted for most particles, as lists end anywhere in a block:
-// 30 % of the pressure solve's time on the dam break.
+// A block's lanes past the list's end read the indices that follow it (NeighborList::kReadPast)
+// and the sums zero their terms: no branch on where a list ends but the loop's own, which the
+// scalar loop had too. A branch to a separate tail block mispredicted for most particles
+// (lists end anywhere in a block): 30 % of the pressure solve's time on the dam break; and
+// clamping each lane's index to the list cost as much as the lanes saved.
+static_assert(NeighborList::kReadPast >= kPadding);
 
 /// (x_j, w_j) of neighbours k … as columns.
-HWY_INLINE Columns LoadPoints(const glm::vec4* points, const Neighbors& neighbors, std::size_t k) {
-    const std::size_t last = neighbors.count - 1;
-    return Transpose([&](std::size_t l) HWY_ATTR { return &points[neighbors.index[std::min(k + l, last)]].x; });
-}
-
-/// Velocities of neighbours k … as columns x, y, z (w is the next particle's x, unused). A
-/// row reads 16 bytes from a 12-byte vec3, so the array's last one is read from a copy, `end`.
-HWY_INLINE Columns LoadVelocities(const glm::vec3* velocities, std::size_t count, const Neighbors& neighbors,
-                                  std::size_t k, const float* end) {
-    const std::size_t last = neighbors.count - 1;
-    return Transpose([&](std::size_t l) HWY_ATTR {
-        const std::uint32_t j = neighbors.index[std::min(k + l, last)];
-        return j + 1 < count ? &velocities[j].x : end;
-    });
+HWY_INLINE Columns LoadRows(const glm::vec4* rows, const Neighbors& neighbors, std::size_t k) {
+    const std::uint32_t* index = neighbors.index + k;
+    return Transpose([&](std::size_t l) HWY_ATTR { return &rows[index[l]].x; });
 }
 
 template <bool Periodic>
@@ -198,7 +186,7 @@ float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm:
     const V two = hn::Set(d, 2.0f), eight = hn::Set(d, 8.0f);
     V sum = zero;
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadPoints(points, neighbors, k);
+        const Columns j = LoadRows(points, neighbors, k);
         const V dx = Delta<Periodic>(xx, j.x, box.period.x, box.half.x);
         const V dy = Delta<Periodic>(xy, j.y, box.period.y, box.half.y);
         const V dz = Delta<Periodic>(xz, j.z, box.period.z, box.half.z);
@@ -218,7 +206,7 @@ glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, cons
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
     V sx = hn::Zero(d), sy = hn::Zero(d), sz = hn::Zero(d);
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadPoints(points, neighbors, k);
+        const Columns j = LoadRows(points, neighbors, k);
         const V s = hn::Mul(j.w, LoadMagnitudes(neighbors, k));
         sx = hn::MulAdd(s, Delta<Periodic>(xx, j.x, box.period.x, box.half.x), sx);
         sy = hn::MulAdd(s, Delta<Periodic>(xy, j.y, box.period.y, box.half.y), sy);
@@ -228,17 +216,15 @@ glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, cons
 }
 
 template <bool Periodic>
-float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3* velocities,
-                     std::size_t count, const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
+float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
     const V vx = hn::Set(d, vi.x), vy = hn::Set(d, vi.y), vz = hn::Set(d, vi.z);
-    float last[4] = {};
-    if (count > 0) std::memcpy(last, &velocities[count - 1], sizeof(glm::vec3));
     V sum = hn::Zero(d);
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadPoints(points, neighbors, k);
-        const Columns v = LoadVelocities(velocities, count, neighbors, k, last);
+        const Columns j = LoadRows(points, neighbors, k);
+        const Columns v = LoadRows(velocities, neighbors, k);
         const V dot = hn::MulAdd(hn::Sub(vx, v.x), Delta<Periodic>(xx, j.x, box.period.x, box.half.x),
                                  hn::MulAdd(hn::Sub(vy, v.y), Delta<Periodic>(xy, j.y, box.period.y, box.half.y),
                                             hn::Mul(hn::Sub(vz, v.z), Delta<Periodic>(xz, j.z, box.period.z, box.half.z))));
@@ -258,10 +244,10 @@ glm::vec3 GradientSumImpl(const Neighbors& neighbors, const glm::vec4* points, c
                           const PeriodicBox& box) {
     return box.any ? GradientSumT<true>(neighbors, points, xi, box) : GradientSumT<false>(neighbors, points, xi, box);
 }
-float DivergenceSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3* velocities,
-                        std::size_t count, const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
-    return box.any ? DivergenceSumT<true>(neighbors, points, velocities, count, xi, vi, box)
-                   : DivergenceSumT<false>(neighbors, points, velocities, count, xi, vi, box);
+float DivergenceSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                        const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
+    return box.any ? DivergenceSumT<true>(neighbors, points, velocities, xi, vi, box)
+                   : DivergenceSumT<false>(neighbors, points, velocities, xi, vi, box);
 }
 const char* InstructionSetImpl() { return hwy::TargetName(HWY_TARGET); }
 
@@ -291,12 +277,12 @@ glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const
                        : sequential::gradientSum<false>(neighbors, points, xi, box);
     return HWY_DYNAMIC_DISPATCH(GradientSumImpl)(neighbors, points, xi, box);
 }
-float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, std::span<const glm::vec3> velocities,
+float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box, Order order) {
     if (order == Order::Sequential)
-        return box.any ? sequential::divergenceSum<true>(neighbors, points, velocities.data(), xi, vi, box)
-                       : sequential::divergenceSum<false>(neighbors, points, velocities.data(), xi, vi, box);
-    return HWY_DYNAMIC_DISPATCH(DivergenceSumImpl)(neighbors, points, velocities.data(), velocities.size(), xi, vi, box);
+        return box.any ? sequential::divergenceSum<true>(neighbors, points, velocities, xi, vi, box)
+                       : sequential::divergenceSum<false>(neighbors, points, velocities, xi, vi, box);
+    return HWY_DYNAMIC_DISPATCH(DivergenceSumImpl)(neighbors, points, velocities, xi, vi, box);
 }
 const char* instructionSet() { return HWY_DYNAMIC_DISPATCH(InstructionSetImpl)(); }
 

@@ -11,7 +11,6 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <span>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -21,13 +20,13 @@
 
 namespace tide::pair_sums {
 
-/// How far past a list's end its codes are read (and ignored): arrays of codes hold this
-/// many more after their last list.
+/// How far past a list's end its indices and codes are read (and ignored): NeighborList and
+/// PairKernels leave that much room after their last list.
 inline constexpr std::size_t kPadding = 8;
 
 /// One particle's neighbours: indices into the loaded arrays and, where a sum needs them,
-/// the pairs' coded gradient factors (PairKernels::Code, aligned with the indices; readable
-/// kPadding past the last).
+/// the pairs' coded gradient factors (PairKernels::Code, aligned with the indices), both
+/// readable kPadding past the end.
 struct Neighbors {
     const std::uint32_t* index = nullptr;
     const std::uint16_t* code = nullptr;
@@ -48,8 +47,8 @@ float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::
 glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                       const PeriodicBox& box, Order order = Order::Lanes);
 
-/// Σ_j w_j m_ij (v_i − v_j)·(x_i − x_j), with m_ij as above.
-float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, std::span<const glm::vec3> velocities,
+/// Σ_j w_j m_ij (v_i − v_j)·(x_i − x_j), with m_ij as above and (v_j, ·) = velocities[j].
+float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box, Order order = Order::Lanes);
 
 /// The instruction set the sums run on here (e.g. "AVX2"), for reports.
