@@ -8,17 +8,18 @@
 
 #include "core/parallel.hpp"
 #include "core/scratch_resize.hpp"
+#include "neighbors/within_radius.hpp"
 
 namespace tide {
 
 namespace {
 
 /// Candidates of one cell's 3×3×3 neighbourhood, copied into contiguous SoA arrays so the
-/// distance test over them vectorises and is shared by every particle of the cell.
+/// distance test over them runs in SIMD lanes (within_radius.hpp) and is shared by every
+/// particle of the cell.
 struct CandidateSet {
     std::vector<float> x, y, z;
     std::vector<std::uint32_t> index;
-    std::vector<float> distance2;  ///< scratch of appendWithin
 
     void gather(const UniformGrid& grid, std::span<const glm::vec3> positions, const glm::ivec3& cell) {
         x.clear();
@@ -35,43 +36,29 @@ struct CandidateSet {
                 index.push_back(j);
             }
         });
+        count_ = index.size();
+        // A whole last block: candidates at +∞, never within reach.
+        constexpr float far = std::numeric_limits<float>::infinity();
+        x.resize(count_ + within_radius::kBlock, far);
+        y.resize(count_ + within_radius::kBlock, far);
+        z.resize(count_ + within_radius::kBlock, far);
+        index.resize(count_ + within_radius::kBlock, 0u);
     }
 
-    /// Appends to `out` the candidates within the radius of q, skipping `skip`, in two passes:
-    /// squared distances for all candidates (a loop the compiler vectorises), then a
-    /// branch-free compaction (every candidate is written and the end advances only for hits,
-    /// ~15 % of candidates, so a branch on them would mispredict). Distances are to the
-    /// nearest periodic image.
+    /// Appends to `out` the candidates within the radius of q, skipping `skip` (distances to
+    /// the nearest periodic image), in candidate order.
     void appendWithin(const glm::vec3& q, float radius2, std::uint32_t skip, const PeriodicBox& box,
-                      std::vector<std::uint32_t>& out) {
-        const std::size_t count = index.size();
-        distance2.resize(count);
-        float* d2 = distance2.data();
-        const float* px = x.data();
-        const float* py = y.data();
-        const float* pz = z.data();
-        if (!box.any) {
-            for (std::size_t t = 0; t < count; ++t) {
-                const float dx = q.x - px[t], dy = q.y - py[t], dz = q.z - pz[t];
-                d2[t] = dx * dx + dy * dy + dz * dz;
-            }
-        } else {
-            for (std::size_t t = 0; t < count; ++t) {
-                const glm::vec3 d = box.nearestImage({q.x - px[t], q.y - py[t], q.z - pz[t]});
-                d2[t] = d.x * d.x + d.y * d.y + d.z * d.z;
-            }
-        }
-        std::size_t size = out.size();
-        reserveGrowing(out, size + count);
-        out.resize(size + count);
-        std::uint32_t* dst = out.data();
-        const std::uint32_t* candidate = index.data();
-        for (std::size_t t = 0; t < count; ++t) {
-            dst[size] = candidate[t];
-            size += static_cast<std::size_t>((d2[t] <= radius2) & (candidate[t] != skip));
-        }
-        out.resize(size);
+                      std::vector<std::uint32_t>& out) const {
+        const std::size_t size = out.size();
+        reserveGrowing(out, size + count_ + within_radius::kBlock);
+        out.resize(size + count_ + within_radius::kBlock);
+        const std::size_t hits =
+            within_radius::select({x.data(), y.data(), z.data(), index.data(), count_}, q, radius2, skip, box, out.data() + size);
+        out.resize(size + hits);
     }
+
+private:
+    std::size_t count_ = 0;
 };
 
 /// Chunks of a list build per thread, taken dynamically: the work per query is uneven (the wall

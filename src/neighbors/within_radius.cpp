@@ -1,0 +1,76 @@
+// The neighbour search's distance test of within_radius.hpp, compiled once per instruction
+// set by Highway's foreach_target and dispatched at run time.
+#include "neighbors/within_radius.hpp"
+
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "neighbors/within_radius.cpp"
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace tide::within_radius {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+using D = hn::CappedTag<float, kBlock>;
+using DU = hn::RebindToUnsigned<D>;
+using V = hn::Vec<D>;
+
+/// One axis of q − x, to the nearest image where the axis is periodic (as PeriodicBox).
+template <bool Periodic>
+HWY_INLINE V Delta(V q, V x, float period, float half) {
+    const D d;
+    V delta = hn::Sub(q, x);
+    if constexpr (Periodic) {
+        const V p = hn::Set(d, period), h = hn::Set(d, half);
+        delta = hn::Sub(delta, hn::IfThenElseZero(hn::Gt(delta, h), p));
+        delta = hn::Add(delta, hn::IfThenElseZero(hn::Lt(delta, hn::Neg(h)), p));
+    }
+    return delta;
+}
+
+template <bool Periodic>
+std::size_t SelectT(const Candidates& c, const glm::vec3& q, float radius2, std::uint32_t skip, const PeriodicBox& box,
+                    std::uint32_t* out) {
+    const D d;
+    const DU du;
+    const V qx = hn::Set(d, q.x), qy = hn::Set(d, q.y), qz = hn::Set(d, q.z), r2 = hn::Set(d, radius2);
+    const auto skipped = hn::Set(du, skip);
+    std::size_t size = 0;
+    for (std::size_t t = 0; t < c.count; t += hn::Lanes(d)) {
+        const V dx = Delta<Periodic>(qx, hn::LoadU(d, c.x + t), box.period.x, box.half.x);
+        const V dy = Delta<Periodic>(qy, hn::LoadU(d, c.y + t), box.period.y, box.half.y);
+        const V dz = Delta<Periodic>(qz, hn::LoadU(d, c.z + t), box.period.z, box.half.z);
+        const auto index = hn::LoadU(du, c.index + t);
+        // Unfused and in the scalar loop's order (this file is built with -ffp-contract=off):
+        // the same pairs on every CPU. Padding lanes sit at +∞ and fail the test.
+        const V d2 = hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz));
+        const auto hit = hn::And(hn::RebindMask(du, hn::Le(d2, r2)), hn::Ne(index, skipped));
+        hn::StoreU(hn::Compress(index, hit), du, out + size);
+        size += hn::CountTrue(du, hit);
+    }
+    return size;
+}
+
+std::size_t SelectImpl(const Candidates& candidates, const glm::vec3& q, float radius2, std::uint32_t skip,
+                       const PeriodicBox& box, std::uint32_t* out) {
+    return box.any ? SelectT<true>(candidates, q, radius2, skip, box, out)
+                   : SelectT<false>(candidates, q, radius2, skip, box, out);
+}
+
+}  // namespace HWY_NAMESPACE
+}  // namespace tide::within_radius
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace tide::within_radius {
+
+HWY_EXPORT(SelectImpl);
+
+std::size_t select(const Candidates& candidates, const glm::vec3& q, float radius2, std::uint32_t skip,
+                   const PeriodicBox& box, std::uint32_t* out) {
+    return HWY_DYNAMIC_DISPATCH(SelectImpl)(candidates, q, radius2, skip, box, out);
+}
+
+}  // namespace tide::within_radius
+#endif  // HWY_ONCE
