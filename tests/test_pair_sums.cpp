@@ -1,6 +1,7 @@
 // The pressure solves' SIMD pair sums (solvers/pair_sums.hpp) against the same sums in
 // double precision, for lists of every length around the lane count (the lanes past a list's
-// end must add nothing, whatever indices and codes follow it), and across a periodic axis.
+// end must add nothing, whatever indices and codes follow it), and across a periodic axis;
+// and the codes the density pass writes.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 
 #include "core/kernels.hpp"
 #include "core/periodic_box.hpp"
+#include "neighbors/neighbor_list.hpp"
 #include "solvers/pair_kernels.hpp"
 #include "solvers/pair_sums.hpp"
 
@@ -43,6 +45,7 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
     const glm::vec3 xi(cloud.points[i]);
     const glm::vec3 vi(cloud.velocities[i]);
     PairKernels factors;
+    factors.resize(NeighborList{}, w);  // the kernel's unit
     std::vector<PairKernels::Code> codes;
     for (const std::uint32_t j : candidates) {
         const glm::vec3 r = box.delta(xi, glm::vec3(cloud.points[j]));
@@ -70,8 +73,18 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
             divergence += rate;
             divergenceScale += std::abs(rate);
         }
+        ASSERT_TRUE(count == 0 || gradientScale.x + gradientScale.y + gradientScale.z > 0.0);  // codes that count
         for (const auto order : {pair_sums::Order::Lanes, pair_sums::Order::Sequential}) {
             const float initial = 0.25f;
+            // The density pass writes each pair's code, bit for bit encode()'s, and nothing past the list.
+            constexpr PairKernels::Code untouched = 0xABCD;
+            std::vector<PairKernels::Code> written(codes.size(), untouched);
+            EXPECT_NEAR(pair_sums::kernelSumAndCodes(neighbors, cloud.points.data(), xi, w, box, initial, factors,
+                                                     written.data(), order),
+                        initial + kernel, 1e-5 * (kernelScale + initial))
+                << count << " neighbours";
+            for (std::size_t k = 0; k < written.size(); ++k)
+                EXPECT_EQ(written[k], k < count ? codes[k] : untouched) << k << " of " << count << " neighbours";
             EXPECT_NEAR(pair_sums::kernelSum(neighbors, cloud.points.data(), xi, w, box, initial, order), initial + kernel,
                         1e-5 * (kernelScale + initial))
                 << count << " neighbours";

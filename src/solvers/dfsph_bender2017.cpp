@@ -48,7 +48,7 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     // sph::computeDensities) and the gradient factors from one square root per pair.
     contrast_.prepare(p, ctx.materials, ctx.threads);
     // (x_j, m_j) for one rest density, (x_j, 1) with a density contrast, where i's own mass
-    // multiplies the sums instead: the one-material sums stay bit for bit what they were.
+    // multiplies the sums instead.
     const bool uniform = contrast_.uniform();
     positionMass_.resize(n);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -60,17 +60,12 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     withPairVector(ctx.periodic, [&](auto delta) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
-            float rho = positionMass_[i].w * self;  // m_i δ_i: Σ_j m_j W_ij, or δ_i = Σ_j W_ij times m_i below
-            PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
-            for (const std::uint32_t j : ctx.neighbors.of(i)) {
-                const glm::vec4 xj = positionMass_[j];
-                const glm::vec3 d = delta(xi, glm::vec3(xj));
-                const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-                rho += xj.w * w.value(r);
-                *f++ = fluidF_.encode(w, r);
-            }
+            // m_i δ_i: Σ_j m_j W_ij, or δ_i = Σ_j W_ij times m_i below
+            float rho = pair_sums::kernelSumAndCodes(fluidPairs(ctx, i), positionMass_.data(), xi, w, ctx.periodic,
+                                                     positionMass_[i].w * self, fluidF_,
+                                                     fluidF_.of(ctx.neighbors, i).data(), pairOrder());
             float volume = 0.0f;
-            f = wallF_.of(ctx.boundaryNeighbors, i).data();
+            PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
             for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
                 const glm::vec3 d = delta(xi, ctx.boundary.position[b]);
                 const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);

@@ -63,16 +63,17 @@ public:
     }
     /// The factor of a code's magnitude 1: −12σ/h².
     [[nodiscard]] float unit() const { return unit_; }
+    [[nodiscard]] float invUnit() const { return invUnit_; }
     /// The factor F a code stands for.
     [[nodiscard]] float factor(Code code) const { return unit_ * magnitude(code); }
 
-    /// The code's layout (public for the SIMD decode in pair_sums.cpp): a code c ≠ 0 stands
+    /// The code's layout (public for the SIMD code in pair_sums.cpp): a code c ≠ 0 stands
     /// for the float with bits (c + (kLowestExponent << kMantissaBits)) << kDropped.
     static constexpr unsigned kMantissaBits = 11, kDropped = 23 - kMantissaBits;
     static constexpr std::uint32_t kLowestExponent = 127 - 31;  ///< biased exponent of 2⁻³¹
+    static constexpr float kSmallest = 0x1p-31f;
 
 private:
-    static constexpr float kSmallest = 0x1p-31f;
     std::vector<Code> values_;
     float unit_ = 0.0f, invUnit_ = 0.0f;  ///< −12σ/h², and its inverse
 };

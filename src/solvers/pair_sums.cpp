@@ -34,6 +34,21 @@ float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::
     return sum;
 }
 
+template <bool Periodic>
+float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                        const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                        std::uint16_t* codes) {
+    float sum = initial;
+    for (std::size_t k = 0; k < neighbors.count; ++k) {
+        const glm::vec4 xj = points[neighbors.index[k]];
+        const glm::vec3 d = delta<Periodic>(xi, xj, box);
+        const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        sum += xj.w * w.value(r);
+        codes[k] = factors.encode(w, r);
+    }
+    return sum;
+}
+
 // Accumulating in separate floats rather than a glm::vec3: GCC keeps a vec3's third lane on
 // the stack, a store-load chain through every iteration.
 template <bool Periodic>
@@ -82,6 +97,12 @@ template <bool Periodic>
 float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                  const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
     return sequential::kernelSum<Periodic>(neighbors, points, xi, w, box, initial);
+}
+template <bool Periodic>
+float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                         const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                         std::uint16_t* codes) {
+    return sequential::kernelSumAndCodes<Periodic>(neighbors, points, xi, w, box, initial, factors, codes);
 }
 template <bool Periodic>
 glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, const PeriodicBox& box) {
@@ -200,6 +221,61 @@ float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm:
     return initial + w.sigma * hn::GetLane(hn::SumOfLanes(d, sum));
 }
 
+/// The lanes' PairKernels::encode(w, r), operation for operation (this file is built with
+/// -ffp-contract=off, so the codes are the scalar ones bit for bit).
+HWY_INLINE hn::Vec<DU16> EncodeFactors(V r, const kernels::CubicSpline& w, float invUnit) {
+    const D d;
+    const hn::RebindToSigned<D> di;
+    const DU16 du16;
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0f);
+    // W'(r) = σ/h (24(½ − q)₊² − 6(1 − q)₊²), as CubicSpline::derivative
+    const V q = hn::Mul(r, hn::Set(d, w.invH));
+    const V outer = hn::Max(hn::Sub(one, q), zero), inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
+    const V derivative = hn::Mul(hn::Set(d, w.sigma * w.invH),
+                                 hn::Sub(hn::Mul(hn::Mul(hn::Set(d, 24.0f), inner), inner),
+                                         hn::Mul(hn::Mul(hn::Set(d, 6.0f), outer), outer)));
+    const V f = hn::IfThenElseZero(hn::Gt(r, zero), hn::Div(derivative, r));
+    const V scaled = hn::Mul(f, hn::Set(d, invUnit));
+    const V x = hn::IfThenElse(hn::Lt(one, scaled), one, scaled);  // std::min: NaN stays NaN, and codes as 0
+    const auto bits = hn::Add(hn::BitCast(di, x), hn::Set(di, 1 << (PairKernels::kDropped - 1)));
+    const auto code = hn::Sub(hn::ShiftRight<PairKernels::kDropped>(bits),
+                              hn::Set(di, static_cast<std::int32_t>(PairKernels::kLowestExponent << PairKernels::kMantissaBits)));
+    return hn::DemoteTo(du16, hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(x, hn::Set(d, PairKernels::kSmallest))), code));
+}
+
+template <bool Periodic>
+float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                         const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                         std::uint16_t* codes) {
+    const D d;
+    const DU16 du16;
+    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
+    const V invH = hn::Set(d, w.invH), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), zero = hn::Zero(d);
+    const V two = hn::Set(d, 2.0f), eight = hn::Set(d, 8.0f);
+    V sum = zero;
+    for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
+        const Columns j = LoadRows(points, neighbors, k);
+        const V dx = Delta<Periodic>(xx, j.x, box.period.x, box.half.x);
+        const V dy = Delta<Periodic>(xy, j.y, box.period.y, box.half.y);
+        const V dz = Delta<Periodic>(xz, j.z, box.period.z, box.half.z);
+        const V r = hn::Sqrt(hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz)));
+        const V q = hn::Mul(r, invH);
+        const V outer = hn::Max(hn::Sub(one, q), zero), inner = hn::Max(hn::Sub(half, q), zero);
+        const V value = hn::Sub(hn::Mul(two, hn::Mul(outer, hn::Mul(outer, outer))),
+                                hn::Mul(eight, hn::Mul(inner, hn::Mul(inner, inner))));
+        sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), value, sum);
+        const auto code = EncodeFactors(r, w, factors.invUnit());
+        if (neighbors.count - k >= hn::Lanes(d)) {
+            hn::StoreU(code, du16, codes + k);
+        } else {  // not past the list: the next one's codes may be another thread's
+            HWY_ALIGN std::uint16_t tail[hn::MaxLanes(D())];
+            hn::Store(code, du16, tail);
+            for (std::size_t l = 0; k + l < neighbors.count; ++l) codes[k + l] = tail[l];
+        }
+    }
+    return initial + w.sigma * hn::GetLane(hn::SumOfLanes(d, sum));
+}
+
 template <bool Periodic>
 glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, const PeriodicBox& box) {
     const D d;
@@ -240,6 +316,12 @@ float KernelSumImpl(const Neighbors& neighbors, const glm::vec4* points, const g
     return box.any ? KernelSumT<true>(neighbors, points, xi, w, box, initial)
                    : KernelSumT<false>(neighbors, points, xi, w, box, initial);
 }
+float KernelSumAndCodesImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                            const kernels::CubicSpline& w, const PeriodicBox& box, float initial,
+                            const PairKernels& factors, std::uint16_t* codes) {
+    return box.any ? KernelSumAndCodesT<true>(neighbors, points, xi, w, box, initial, factors, codes)
+                   : KernelSumAndCodesT<false>(neighbors, points, xi, w, box, initial, factors, codes);
+}
 glm::vec3 GradientSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                           const PeriodicBox& box) {
     return box.any ? GradientSumT<true>(neighbors, points, xi, box) : GradientSumT<false>(neighbors, points, xi, box);
@@ -259,6 +341,7 @@ HWY_AFTER_NAMESPACE();
 namespace tide::pair_sums {
 
 HWY_EXPORT(KernelSumImpl);
+HWY_EXPORT(KernelSumAndCodesImpl);
 HWY_EXPORT(GradientSumImpl);
 HWY_EXPORT(DivergenceSumImpl);
 HWY_EXPORT(InstructionSetImpl);
@@ -269,6 +352,14 @@ float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::
         return box.any ? sequential::kernelSum<true>(neighbors, points, xi, w, box, initial)
                        : sequential::kernelSum<false>(neighbors, points, xi, w, box, initial);
     return HWY_DYNAMIC_DISPATCH(KernelSumImpl)(neighbors, points, xi, w, box, initial);
+}
+float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                        const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                        std::uint16_t* codes, Order order) {
+    if (order == Order::Sequential)
+        return box.any ? sequential::kernelSumAndCodes<true>(neighbors, points, xi, w, box, initial, factors, codes)
+                       : sequential::kernelSumAndCodes<false>(neighbors, points, xi, w, box, initial, factors, codes);
+    return HWY_DYNAMIC_DISPATCH(KernelSumAndCodesImpl)(neighbors, points, xi, w, box, initial, factors, codes);
 }
 glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                       const PeriodicBox& box, Order order) {

@@ -18,6 +18,10 @@
 #include "core/kernels.hpp"
 #include "core/periodic_box.hpp"
 
+namespace tide {
+class PairKernels;
+}
+
 namespace tide::pair_sums {
 
 /// How far past a list's end its indices and codes are read (and ignored): NeighborList and
@@ -42,6 +46,12 @@ enum class Order {
 /// initial + Σ_j w_j W(|x_i − x_j|) of the cubic spline `w`, with (x_j, w_j) = points[j].
 float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                 const kernels::CubicSpline& w, const PeriodicBox& box, float initial = 0.0f, Order order = Order::Lanes);
+
+/// kernelSum, and each pair's coded gradient factor, factors.encode(w, r_ij), written to
+/// codes[k] for k < count (and nothing past it: the next list's codes may be another thread's).
+float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                        const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                        std::uint16_t* codes, Order order = Order::Lanes);
 
 /// Σ_j w_j m_ij (x_i − x_j), with m_ij = PairKernels::magnitude(code_ij).
 glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
