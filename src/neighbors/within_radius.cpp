@@ -7,6 +7,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "core/nearest_image-inl.h"
+
 HWY_BEFORE_NAMESPACE();
 namespace tide::within_radius {
 namespace HWY_NAMESPACE {
@@ -16,17 +18,9 @@ using D = hn::CappedTag<float, kBlock>;
 using DU = hn::RebindToUnsigned<D>;
 using V = hn::Vec<D>;
 
-/// One axis of q − x, to the nearest image where the axis is periodic (as PeriodicBox).
 template <bool Periodic>
 HWY_INLINE V Delta(V q, V x, float period, float half) {
-    const D d;
-    V delta = hn::Sub(q, x);
-    if constexpr (Periodic) {
-        const V p = hn::Set(d, period), h = hn::Set(d, half);
-        delta = hn::Sub(delta, hn::IfThenElseZero(hn::Gt(delta, h), p));
-        delta = hn::Add(delta, hn::IfThenElseZero(hn::Lt(delta, hn::Neg(h)), p));
-    }
-    return delta;
+    return tide::HWY_NAMESPACE::NearestImageDelta<Periodic>(q, x, period, half);
 }
 
 template <bool Periodic>

@@ -85,6 +85,8 @@ float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const g
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "core/nearest_image-inl.h"
+
 HWY_BEFORE_NAMESPACE();
 namespace tide::pair_sums {
 namespace HWY_NAMESPACE {
@@ -138,23 +140,30 @@ HWY_INLINE V LoadMagnitudes(const Neighbors& neighbors, std::size_t k) {
     return hn::IfThenZeroElse(zero, hn::BitCast(d, bits));
 }
 
-/// x_i − x_j on one axis, to the nearest image where the axis is periodic (PeriodicBox).
-template <bool Periodic>
-HWY_INLINE V Delta(V xi, V xj, float period, float half) {
-    const D d;
-    V delta = hn::Sub(xi, xj);
-    if constexpr (Periodic) {
-        const V p = hn::Set(d, period), h = hn::Set(d, half);
-        delta = hn::Sub(delta, hn::IfThenElseZero(hn::Gt(delta, h), p));
-        delta = hn::Add(delta, hn::IfThenElseZero(hn::Lt(delta, hn::Neg(h)), p));
-    }
-    return delta;
-}
-
 /// Four floats from each of `lanes` rows, transposed into one vector per column.
 struct Columns {
     V x, y, z, w;
 };
+
+/// x_i − x_j of a block of pairs, to the nearest periodic image.
+struct PairVectors {
+    V x, y, z;
+};
+template <bool Periodic>
+HWY_INLINE PairVectors Delta(V xx, V xy, V xz, const Columns& j, const PeriodicBox& box) {
+    return {tide::HWY_NAMESPACE::NearestImageDelta<Periodic>(xx, j.x, box.period.x, box.half.x),
+            tide::HWY_NAMESPACE::NearestImageDelta<Periodic>(xy, j.y, box.period.y, box.half.y),
+            tide::HWY_NAMESPACE::NearestImageDelta<Periodic>(xz, j.z, box.period.z, box.half.z)};
+}
+
+/// W/σ of the cubic spline at q = r/h: 2(1 − q)₊³ − 8(½ − q)₊³, as CubicSpline::value.
+HWY_INLINE V SplineOverSigma(V q) {
+    const D d;
+    const V zero = hn::Zero(d);
+    const V outer = hn::Max(hn::Sub(hn::Set(d, 1.0f), q), zero), inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
+    return hn::Sub(hn::Mul(hn::Set(d, 2.0f), hn::Mul(outer, hn::Mul(outer, outer))),
+                   hn::Mul(hn::Set(d, 8.0f), hn::Mul(inner, hn::Mul(inner, inner))));
+}
 
 /// Rows r_l = row(l) (four floats each) to columns: loads, then the 4 × 4 transposes of SSE
 /// within each 128-bit block. Loading whole rows and shuffling beats gathering each column:
@@ -203,21 +212,13 @@ template <bool Periodic>
 float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                  const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
     const D d;
-    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
-    const V invH = hn::Set(d, w.invH), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), zero = hn::Zero(d);
-    const V two = hn::Set(d, 2.0f), eight = hn::Set(d, 8.0f);
-    V sum = zero;
+    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z), invH = hn::Set(d, w.invH);
+    V sum = hn::Zero(d);
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
         const Columns j = LoadRows(points, neighbors, k);
-        const V dx = Delta<Periodic>(xx, j.x, box.period.x, box.half.x);
-        const V dy = Delta<Periodic>(xy, j.y, box.period.y, box.half.y);
-        const V dz = Delta<Periodic>(xz, j.z, box.period.z, box.half.z);
-        const V q = hn::Mul(hn::Sqrt(hn::MulAdd(dx, dx, hn::MulAdd(dy, dy, hn::Mul(dz, dz)))), invH);
-        // W/σ = 2(1 − q)₊³ − 8(½ − q)₊³, as CubicSpline::value
-        const V outer = hn::Max(hn::Sub(one, q), zero), inner = hn::Max(hn::Sub(half, q), zero);
-        const V value = hn::Sub(hn::Mul(two, hn::Mul(outer, hn::Mul(outer, outer))),
-                                hn::Mul(eight, hn::Mul(inner, hn::Mul(inner, inner))));
-        sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), value, sum);
+        const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
+        const V q = hn::Mul(hn::Sqrt(hn::MulAdd(r.x, r.x, hn::MulAdd(r.y, r.y, hn::Mul(r.z, r.z)))), invH);
+        sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), SplineOverSigma(q), sum);
     }
     return initial + w.sigma * hn::GetLane(hn::SumOfLanes(d, sum));
 }
@@ -250,21 +251,14 @@ float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, co
                          std::uint16_t* codes) {
     const D d;
     const DU16 du16;
-    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
-    const V invH = hn::Set(d, w.invH), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), zero = hn::Zero(d);
-    const V two = hn::Set(d, 2.0f), eight = hn::Set(d, 8.0f);
-    V sum = zero;
+    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z), invH = hn::Set(d, w.invH);
+    V sum = hn::Zero(d);
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
         const Columns j = LoadRows(points, neighbors, k);
-        const V dx = Delta<Periodic>(xx, j.x, box.period.x, box.half.x);
-        const V dy = Delta<Periodic>(xy, j.y, box.period.y, box.half.y);
-        const V dz = Delta<Periodic>(xz, j.z, box.period.z, box.half.z);
-        const V r = hn::Sqrt(hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz)));
-        const V q = hn::Mul(r, invH);
-        const V outer = hn::Max(hn::Sub(one, q), zero), inner = hn::Max(hn::Sub(half, q), zero);
-        const V value = hn::Sub(hn::Mul(two, hn::Mul(outer, hn::Mul(outer, outer))),
-                                hn::Mul(eight, hn::Mul(inner, hn::Mul(inner, inner))));
-        sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), value, sum);
+        const PairVectors d3 = Delta<Periodic>(xx, xy, xz, j, box);
+        // Unfused, as the scalar density pass: the codes below are its codes.
+        const V r = hn::Sqrt(hn::Add(hn::Add(hn::Mul(d3.x, d3.x), hn::Mul(d3.y, d3.y)), hn::Mul(d3.z, d3.z)));
+        sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), SplineOverSigma(hn::Mul(r, invH)), sum);
         const auto code = EncodeFactors(r, w, factors.invUnit());
         if (neighbors.count - k >= hn::Lanes(d)) {
             hn::StoreU(code, du16, codes + k);
@@ -285,9 +279,10 @@ glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, cons
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
         const Columns j = LoadRows(points, neighbors, k);
         const V s = hn::Mul(j.w, LoadMagnitudes(neighbors, k));
-        sx = hn::MulAdd(s, Delta<Periodic>(xx, j.x, box.period.x, box.half.x), sx);
-        sy = hn::MulAdd(s, Delta<Periodic>(xy, j.y, box.period.y, box.half.y), sy);
-        sz = hn::MulAdd(s, Delta<Periodic>(xz, j.z, box.period.z, box.half.z), sz);
+        const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
+        sx = hn::MulAdd(s, r.x, sx);
+        sy = hn::MulAdd(s, r.y, sy);
+        sz = hn::MulAdd(s, r.z, sz);
     }
     return {hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)), hn::GetLane(hn::SumOfLanes(d, sz))};
 }
@@ -302,9 +297,8 @@ float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const 
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
         const Columns j = LoadRows(points, neighbors, k);
         const Columns v = LoadRows(velocities, neighbors, k);
-        const V dot = hn::MulAdd(hn::Sub(vx, v.x), Delta<Periodic>(xx, j.x, box.period.x, box.half.x),
-                                 hn::MulAdd(hn::Sub(vy, v.y), Delta<Periodic>(xy, j.y, box.period.y, box.half.y),
-                                            hn::Mul(hn::Sub(vz, v.z), Delta<Periodic>(xz, j.z, box.period.z, box.half.z))));
+        const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
+        const V dot = hn::MulAdd(hn::Sub(vx, v.x), r.x, hn::MulAdd(hn::Sub(vy, v.y), r.y, hn::Mul(hn::Sub(vz, v.z), r.z)));
         sum = hn::MulAdd(hn::Mul(j.w, LoadMagnitudes(neighbors, k)), dot, sum);
     }
     return hn::GetLane(hn::SumOfLanes(d, sum));
