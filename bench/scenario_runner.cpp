@@ -185,7 +185,10 @@ int main(int argc, char** argv) {
     if (one >= 0) return runOne(kScenarios.at(static_cast<std::size_t>(one)), seconds, threads);
 
     if (csv.empty()) csv = std::string(TIDE_SOURCE_DIR) + "/bench/results/" + cpuModel() + ".csv";
-    const std::string revision = shellOutput("git -C " + std::string(TIDE_SOURCE_DIR) + " rev-parse --short HEAD 2>/dev/null");
+    // The checkout's commit, "-dirty" when its tracked files differ from it (the binary may hold
+    // work not committed yet; a binary built from another tree is not detectable here).
+    const std::string revision = shellOutput("git -C " + std::string(TIDE_SOURCE_DIR) +
+                                             " describe --always --dirty --abbrev=7 --exclude '*' 2>/dev/null");
     const bool fresh = !fs::exists(csv);
     fs::create_directories(fs::path(csv).parent_path());
     std::ofstream out(csv, std::ios::app);
