@@ -56,8 +56,8 @@ private:
     }
     /// SIMD lanes for one rest density. With several, the sums keep the scalar loops' order:
     /// the 5:1 column drop of tests/test_multifluid.cpp clumps pairs of light particles at
-    /// its surface (0.3 spacings apart by 0.088 s) and runs into a density solve that does
-    /// not converge at 0.088 s whichever the order; with the lanes' rounding (AVX2, AVX-512)
+    /// its surface (0.88 spacings apart at 0.02 s, 0.32 at 0.06 s; the closest pair 0.09 at
+    /// 0.086 s) and runs into a density solve that does not converge at 0.088 s whichever the order; with the lanes' rounding (AVX2, AVX-512)
     /// the retaken steps then diverge, with the scalar or SSE4 rounding they recover.
     [[nodiscard]] pair_sums::Order pairOrder() const {
         return contrast_.uniform() ? pair_sums::Order::Lanes : pair_sums::Order::Sequential;
