@@ -3,7 +3,8 @@
 // speed of the particles in each layer one spacing thick from the floor up. The particles of
 // the cubic lattice the water starts on rearrange under the hydrostatic pressure from the
 // floor up, at a rate that grows with that pressure and with the kernel support
-// (docs/robustness.md § Still water at fine spacings); this shows when and where.
+// (docs/robustness.md § Still water at fine spacings); this shows when and where, and with
+// --settle how still the water stays after a pre-roll (World::settle).
 //
 //   tide_rest_layers [--solver dfsph] [--spacing 0.02] [--support-ratio 2] [--depth 0.3] ...
 #include <algorithm>
@@ -22,13 +23,16 @@ int main(int argc, char** argv) {
     CLI::App app{"RMS and largest speed per layer of water at rest, over time"};
     tide::bench::TankOptions tank;
     float gravity = 9.81f;
-    double seconds = 0.5, every = 0.05;
+    double seconds = 0.5, every = 0.05, settle = 0.0;
     bool closed = false;
     tank.addTo(app);
     app.add_flag("--closed", closed, "walls across z too (a square tank `length` wide) instead of a periodic cell");
     app.add_option("--gravity", gravity, "|g|, m/s²")->capture_default_str()->check(CLI::NonNegativeNumber);
     app.add_option("--seconds", seconds, "simulated time, s")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--every", every, "report interval, s")->capture_default_str()->check(CLI::PositiveNumber);
+    app.add_option("--settle", settle, "World::settle for this long first (pre-roll, velocities zeroed), s")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
     CLI11_PARSE(app, argc, argv);
 
     tide::WorldDef def = tank.worldDef();
@@ -38,6 +42,11 @@ int main(int argc, char** argv) {
         const int layers = static_cast<int>(std::lround(tank.depth / tank.spacing));
         std::printf("%s, spacing %.4f m, support %.2f spacings, %u particles, %d layers; speeds in mm/s, floor first\n",
                     tank.solver.c_str(), tank.spacing, tank.supportRatio, world.particles().size(), layers);
+        if (settle > 0.0) {
+            const tide::SettleReport r = world.settle(settle);
+            std::printf("settled %.2f s in %llu steps: max speed %.4f m/s before the velocities were zeroed\n", r.seconds,
+                        static_cast<unsigned long long>(r.steps), r.maxSpeed);
+        }
         const int reports = static_cast<int>(std::lround(seconds / every));
         for (int n = 0; n < reports; ++n) {
             world.advance(every);

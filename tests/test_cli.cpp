@@ -122,6 +122,9 @@ std::vector<BrokenScene> brokenScenes() {
         {"spectrum gamma", smallScene(R"(, "wavemaker": {"type": "flap", "x": 0.05, "depth": 0.1, "spectrum": {"type": "jonswap", "hs": 0.01, "tp": 1, "gamma": 0.5}})"),
          "wavemaker.spectrum.gamma"},
         {"damping flat", smallScene(R"(, "damping": {"x_start": 0.1, "x_end": 0.1})"), "damping.x_end"},
+        {"settle time negative", smallScene(R"(, "settle": {"time": -1})"), "settle.time: must be >= 0"},
+        {"settle without time", smallScene(R"(, "settle": {})"), "settle.time: missing"},
+        {"settle unknown key", smallScene(R"(, "settle": {"seconds": 2})"), "settle.seconds: unknown key"},
         {"gauge without x", smallScene(R"(, "gauges": [{"name": "g1"}])"), "gauges[0].x"},
         {"gauge names repeat", smallScene(R"(, "gauges": [{"name": "g1", "x": 0.1}, {"name": "g1", "x": 0.15}])"), "gauges[1].name"},
         {"probe outside", smallScene(R"(, "probes": [{"name": "p", "position": [0.1, 0.1, 9]}])"), "probes[0].position"},
@@ -224,6 +227,32 @@ TEST(Cli, RunWritesEveryFormatAndStats) {
 
     const std::string stats = expectFullStats(out);
     EXPECT_NE(stats.find("\"sim_time\": 0.1"), std::string::npos) << stats;
+}
+
+// settle.time: the pre-roll runs before frame 0, which then shows the water at rest (the block
+// was thrown at 0.3 m/s; without the pre-roll frame 0 holds that velocity).
+TEST(Cli, SettleRunsBeforeTheFirstFrame) {
+    std::string text = smallScene(R"(, "settle": {"time": 0.1})");
+    text = replace(text, "\"material\": \"water\"}]", "\"material\": \"water\", \"velocity\": [0.3, 0, 0]}]");
+    text = replace(text, "\"formats\": [\"vtu\"]", "\"formats\": [\"csv\"]");
+    const fs::path out = scratch("settle_out");
+    const Result r = run(kTide + " run " + writeScene("settle", text).string() + " --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    EXPECT_NE(r.output.find("settled for 0.1 s"), std::string::npos) << r.output;
+    std::ifstream csv(out / "frame_00000.csv");
+    std::string line;
+    std::getline(csv, line);
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        double v[9];
+        ASSERT_EQ(std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf,%lf", v, v + 1, v + 2, v + 3, v + 4, v + 5,
+                              v + 6, v + 7, v + 8), 9) << line;
+        EXPECT_EQ(v[3], 0.0) << line;
+        ++rows;
+    }
+    EXPECT_EQ(rows, 250);
+    const std::string stats = expectFullStats(out);
+    EXPECT_NE(stats.find("\"sim_time\": 0.1"), std::string::npos) << stats;  // the pre-roll is not run time
 }
 
 TEST(Cli, RefusesAnotherRunsFolderUnlessForced) {

@@ -21,14 +21,17 @@ struct Hydrostatics {
     double pressureRms = 0.0;   ///< RMS over depth bins of (p̄ − ρ g d)/(ρ g d), time-averaged
     double meanDensityError = 0.0;
     double maxCompression = 0.0;  ///< largest per-step mean compression after the first 0.1 s
-    float maxSpeed = 0.0f;
+    float maxSpeed = 0.0f;      ///< after the last step (2 s)
+    float maxSpeedLate = 0.0f;  ///< largest after any step of the last 0.5 s
     double meanDt = 0.0;
 };
 
-/// A tank 0.3 m deep and `width` square (0.24 m, spacing 0.02 m unless given) settles for 1.5 s;
-/// pressure is then averaged over 0.5 s in depth bins one spacing thick, in the middle half of
-/// the width (away from the side walls).
-Hydrostatics hydrostaticTank(const std::string& solver, float s = 0.02f, float width = 0.24f, float maxDt = 0.0f) {
+/// A tank 0.3 m deep and `width` square (0.24 m, spacing 0.02 m unless given), after a pre-roll
+/// of `settle` seconds (World::settle; none unless given), runs for 1.5 s; pressure is then
+/// averaged over 0.5 s in depth bins one spacing thick, in the middle half of the width (away
+/// from the side walls).
+Hydrostatics hydrostaticTank(const std::string& solver, float s = 0.02f, float width = 0.24f, float maxDt = 0.0f,
+                             double settle = 0.0) {
     const float depth = 0.3f;
     WorldDef def;
     def.domainMax = {width, 0.5f, width};
@@ -38,6 +41,12 @@ Hydrostatics hydrostaticTank(const std::string& solver, float s = 0.02f, float w
     World world(def);
     world.addMaterial(MaterialDef{});
     world.addBlock({{0, 0, 0}, {width, depth, width}, {0, 0, 0}, 0});
+    if (settle > 0.0) {
+        const SettleReport settled = world.settle(settle);
+        std::printf("%s: settled %.1f s in %llu steps, max speed %.4f m/s before zeroing\n", solver.c_str(), settled.seconds,
+                    static_cast<unsigned long long>(settled.steps), settled.maxSpeed);
+        EXPECT_EQ(world.time(), 0.0);
+    }
     Hydrostatics out;
     world.advance(0.1);
     world.advance(1.4, [&] { out.maxCompression = std::max<double>(out.maxCompression, world.stats().meanCompression); });
@@ -46,7 +55,10 @@ Hydrostatics hydrostaticTank(const std::string& solver, float s = 0.02f, float w
     const int bins = static_cast<int>(std::lround(0.22f / s));
     std::vector<double> sum(bins, 0.0), count(bins, 0.0);
     for (int sample = 0; sample < 20; ++sample) {
-        world.advance(0.025, [&] { out.maxCompression = std::max<double>(out.maxCompression, world.stats().meanCompression); });
+        world.advance(0.025, [&] {
+            out.maxCompression = std::max<double>(out.maxCompression, world.stats().meanCompression);
+            out.maxSpeedLate = std::max(out.maxSpeedLate, world.stats().maxSpeed);
+        });
         const ParticleStore& p = world.particles();
         for (std::uint32_t i = 0; i < p.size(); ++i) {
             const glm::vec3 x = p.position[i];
@@ -70,57 +82,71 @@ Hydrostatics hydrostaticTank(const std::string& solver, float s = 0.02f, float w
     out.meanDensityError = world.stats().meanDensityError;
     out.maxSpeed = world.stats().maxSpeed;
     out.meanDt = world.stats().dtSum / static_cast<double>(world.stats().steps);
-    std::printf("%s: pressure RMS %.3f, mean density error %.5f, max compression %.5f, max speed %.4f, mean dt %.2e\n",
-                solver.c_str(), out.pressureRms, out.meanDensityError, out.maxCompression, out.maxSpeed, out.meanDt);
+    std::printf("%s: pressure RMS %.3f, mean density error %.5f, max compression %.5f, max speed %.4f (over the last "
+                "0.5 s %.4f), mean dt %.2e\n",
+                solver.c_str(), out.pressureRms, out.meanDensityError, out.maxCompression, out.maxSpeed, out.maxSpeedLate,
+                out.meanDt);
     return out;
 }
 
-// Issue 4 asks for a max speed < 0.02 m/s at rest; measured 0.07–0.09 (dfsph, pcisph) and
-// 0.022 (wcsph), so that bound is looser. The motion is the whole tank's and particle-scale
-// (RMS 0.026 m/s at 2 s, 0.007 of it coherent over 6 cm): the particles rearrange from 0.25 s
-// on, releasing gravity's energy (the mean height falls ~0.5 mm), whatever the start
-// (lattice, body-centred, gravity ramped in), the solve's tolerance or the free surface (a
-// box filled to its lid does the same); XSPH (ε = 0.01 a step) damps it with a time
-// constant of ~2 s, and wcsph's 19× more steps damp it 19× faster (docs/robustness.md).
-TEST(DfsphSolver, HydrostaticTankMatchesRhoGD) {
+// Water started on the cubic lattice of addBlock is not at rest: the lattice buckles under the
+// hydrostatic pressure from the floor up (from ~0.25 s at 2 cm), the particles rearrange into a
+// denser packing (the surface sinks ~5 mm), and gravity's energy released keeps them moving at
+// max speeds of 0.05–0.09 m/s at 2 s (RMS 0.026), damped by XSPH with a time constant of ~2 s
+// and fed by further compaction (docs/robustness.md § Still water). What the lattice start
+// must still give: the pressure, the density, and speeds bounded by the rearrangement's peak
+// (0.15 m/s at 0.5 s).
+TEST(DfsphSolver, HydrostaticTankFromTheLatticeMatchesRhoGD) {
     const Hydrostatics h = hydrostaticTank("dfsph");
     EXPECT_LT(h.pressureRms, 0.05);
     EXPECT_LT(h.meanDensityError, 0.002);
-    EXPECT_LT(h.maxSpeed, 0.1f);
+    EXPECT_LT(h.maxSpeedLate, 0.15f);
     EXPECT_GT(h.meanDt, 2e-3);  // the CFL step of a fluid at rest: max_dt
+}
+
+// Issue 4's tank at rest: after a pre-roll (World::settle, 10 s at 2 cm: ~2000 steps, in
+// which the particles find an arrangement in which they rest) the water stays still: measured
+// max speeds of 0.003–0.004 m/s over the 2 s after it (0.016 after a 6 s pre-roll, 0.022
+// after 4 s; tide_rest_layers --closed --length 0.24 --settle 10 shows it by layer).
+TEST(DfsphSolver, SettledHydrostaticTankIsAtRest) {
+    const Hydrostatics h = hydrostaticTank("dfsph", 0.02f, 0.24f, 0.0f, 10.0);
+    EXPECT_LT(h.pressureRms, 0.05);
+    EXPECT_LT(h.meanDensityError, 0.002);
+    EXPECT_LT(h.maxSpeedLate, 0.02f);
+    EXPECT_GT(h.meanDt, 2e-3);
 }
 
 // The tank at 1 cm, 30 layers deep (0.12 m square to keep it quick). At the fixed 5 ms
 // max_dt dfsph's solves ran to the iteration limit and it blew up within 0.03 s (speeds of
 // 10–40,000 m/s); with the free-fall step limit alone (3.6 ms) it lasted to 1.96 s. The
 // pressure-speed limit (sph::pressureSpeedStep, 2.6 ms here) holds it: measured pressure
-// RMS 1.3 %, max speed 0.053 m/s (1.9 % and 0.070 while a frame's last step still removed
-// the compression kept within its own length), 16 iterations a step. The issue's 0.24 m
-// tank at 1 cm runs with TIDE_LONG_TESTS=1 (1.1 %, 0.054 m/s).
-TEST(DfsphSolver, HydrostaticTankAtOneCentimetreMatchesRhoGD) {
-    const Hydrostatics h = hydrostaticTank("dfsph", 0.01f, 0.12f);
+// RMS 1.3 %, 16 iterations a step; from the lattice, max speed 0.053 m/s at 2 s; after an
+// 8 s pre-roll, below 0.01 m/s (0.005–0.007 after 6 s, 0.0015–0.0022 after 10 s). The issue's
+// 0.24 m tank at 1 cm runs with TIDE_LONG_TESTS=1.
+TEST(DfsphSolver, SettledTankAtOneCentimetreIsAtRest) {
+    const Hydrostatics h = hydrostaticTank("dfsph", 0.01f, 0.12f, 0.0f, 8.0);
     EXPECT_LT(h.pressureRms, 0.05);
     EXPECT_LT(h.meanDensityError, 0.002);
-    EXPECT_LT(h.maxSpeed, 0.1f);
+    EXPECT_LT(h.maxSpeedLate, 0.02f);
 }
 
-TEST(DfsphSolver, WideHydrostaticTankAtOneCentimetreMatchesRhoGD) {
-    if (std::getenv("TIDE_LONG_TESTS") == nullptr) GTEST_SKIP() << "17,280 particles for 2 s: set TIDE_LONG_TESTS=1";
-    const Hydrostatics h = hydrostaticTank("dfsph", 0.01f);
+TEST(DfsphSolver, WideSettledTankAtOneCentimetreIsAtRest) {
+    if (std::getenv("TIDE_LONG_TESTS") == nullptr) GTEST_SKIP() << "17,280 particles for 10 s: set TIDE_LONG_TESTS=1";
+    const Hydrostatics h = hydrostaticTank("dfsph", 0.01f, 0.24f, 0.0f, 8.0);
     EXPECT_LT(h.pressureRms, 0.05);
     EXPECT_LT(h.meanDensityError, 0.002);
-    EXPECT_LT(h.maxSpeed, 0.1f);
+    EXPECT_LT(h.maxSpeedLate, 0.02f);
 }
 
 // A max_dt below the step the water needs must not stir it: dfsph removes the compression
 // earlier solves left over the step it would have taken (5 ms here), not within 1 ms, which
 // took velocities ∝ 1/Δt: this tank read 0.62 m/s and a mean density error of 1.6 % before
-// (now 0.054 m/s, 0.088 %, pressure RMS 3.1 %).
-TEST(DfsphSolver, ShortMaxDtKeepsTheTankAtRest) {
-    const Hydrostatics h = hydrostaticTank("dfsph", 0.02f, 0.12f, 1e-3f);
+// (then 0.054 m/s from the lattice, 0.088 %, pressure RMS 3.1 %). Settled, it rests as at 5 ms.
+TEST(DfsphSolver, ShortMaxDtKeepsTheSettledTankAtRest) {
+    const Hydrostatics h = hydrostaticTank("dfsph", 0.02f, 0.24f, 1e-3f, 4.0);
     EXPECT_LT(h.pressureRms, 0.05);
     EXPECT_LT(h.meanDensityError, 0.002);
-    EXPECT_LT(h.maxSpeed, 0.1f);
+    EXPECT_LT(h.maxSpeedLate, 0.02f);
     EXPECT_LT(h.meanDt, 1.001e-3);
 }
 

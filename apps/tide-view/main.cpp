@@ -60,5 +60,6 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s: %s\n", sceneFile.c_str(), e.what());
         return 2;
     }
-    return tide::view::runViewer(tide::view::worldSource([scene] { return tide::io::buildWorld(scene); }), options);
+    // The scene's settle.time runs before the window shows the world (and again on a reset).
+    return tide::view::runViewer(tide::view::worldSource([scene] { return tide::io::buildSettledWorld(scene); }), options);
 }

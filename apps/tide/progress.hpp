@@ -5,7 +5,12 @@
 #include <cstdint>
 #include <cstdio>
 
+#include <tide/world.hpp>
+
 namespace tide::cli {
+
+/// World::settle for the scene's settle.time, saying so before and after (unless quiet).
+SettleReport settleAndReport(World& world, double seconds, bool quiet);
 
 class Progress {
 public:

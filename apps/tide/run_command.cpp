@@ -199,6 +199,17 @@ int runCommand(const RunOptions& o) {
     const int checkpointEvery = o.checkpointEvery > 0 ? o.checkpointEvery : done.checkpointEvery;
     std::vector<std::string> formatNames;
     for (const io::Format f : scene.output.formats) formatNames.emplace_back(io::extension(f));
+    // The pre-roll (settle.time) before frame 0, outside the run's wall time. A resumed run
+    // continues from its checkpoint, settled already.
+    if (!resuming && scene.settleTime > 0.0) {
+        try {
+            settleAndReport(*world, scene.settleTime, o.quiet);
+        } catch (const DivergenceError& e) {
+            std::fprintf(stderr, "tide: the simulation diverged while settling (settle.time %g s) at %s; no frame was written\n",
+                         scene.settleTime, e.what());
+            return kExitRunFailed;
+        }
+    }
     const int firstFrame = resuming ? done.frame + 1 : 0;
     const auto start = std::chrono::steady_clock::now();
     const auto wallSoFar = [&] {

@@ -55,6 +55,13 @@ struct WorldStats {
     PhaseSeconds phaseSeconds;          ///< where the steps' wall time went
 };
 
+/// What World::settle did.
+struct SettleReport {
+    double seconds = 0.0;        ///< simulated with the clock held, s
+    std::uint64_t steps = 0;
+    float maxSpeed = 0.0f;       ///< m/s, the fastest particle after the last settling step, before the velocities were zeroed
+};
+
 /// The fluid's state interpolated at a point (World::probe); NaN where no fluid is near.
 struct ProbeSample {
     float density;       ///< kg/m³
@@ -217,6 +224,17 @@ public:
     /// Advance exactly `duration` seconds in as many adaptive steps as needed, calling
     /// `afterStep` (if given) after each one, e.g. to report progress.
     void advance(double duration, const std::function<void()>& afterStep = {});
+
+    /// Pre-roll: let the particles find the arrangement in which they rest, before the run.
+    /// A lattice is not one under pressure: water put on the cubic lattice of addBlock buckles
+    /// under its hydrostatic pressure from the floor up, and moves for seconds while its
+    /// particles rearrange and sink into a denser packing (max speeds of 0.07 m/s after 2 s
+    /// in a 0.3 m tank; docs/robustness.md § Still water). This steps the solver for `seconds`
+    /// of simulated time with the clock held at time(): moving boundaries stand still where
+    /// they are, emitters emit nothing. Then every velocity is zeroed and the statistics
+    /// start again; time() is unchanged. Throws std::invalid_argument naming settle.time for a
+    /// negative or non-finite `seconds`, and DivergenceError as step() does.
+    SettleReport settle(double seconds);
 
     [[nodiscard]] double time() const;
     [[nodiscard]] const ParticleStore& particles() const;

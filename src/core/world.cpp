@@ -189,6 +189,24 @@ struct World::Impl {
         return true;
     }
 
+    /// Whether a step advances the clock (World::step) or holds it (World::settle).
+    enum class Clock { Runs, Held };
+    /// One step of at most maxDt (World::step, whose body this is). With the clock held the
+    /// moving boundaries stand still where they are at `time`, nothing is emitted and `time`
+    /// stays.
+    double step(double maxDt, Clock clock);
+
+    /// Moving boundaries at rest where they stand (a held clock): no velocity, no acceleration.
+    void holdBoundaries() {
+        if (paddles.empty() && movers.empty()) return;
+        for (std::size_t b = 0; b < boundary.velocity.size(); ++b)
+            if (boundary.movable[b]) {
+                boundary.velocity[b] = glm::vec3(0.0f);
+                boundary.acceleration[b] = glm::vec3(0.0f);
+            }
+        boundary.maxSpeed = 0.0f;
+    }
+
     /// Puts the boundary particles of paddles and moving obstacles where their motion has
     /// them at time t, with their velocities and accelerations.
     void moveBoundaries(double t) {
@@ -622,11 +640,17 @@ std::uint32_t World::emitterCount() const { return static_cast<std::uint32_t>(im
 double World::step(double maxDt) {
     if (!(maxDt > 0.0))
         throw std::invalid_argument("maxDt: must be > 0, got " + std::to_string(maxDt));
-    Impl& w = *impl_;
+    return impl_->step(maxDt, Impl::Clock::Runs);
+}
+
+double World::Impl::step(double maxDt, Clock clockMode) {
+    Impl& w = *this;
     if (w.divergence) throw DivergenceError(*w.divergence);  // stepping garbage makes more garbage
+    const bool held = clockMode == Clock::Held;
     PhaseClock clock(w.stats.phaseSeconds);
     w.resolveSoundSpeed();
     w.moveBoundaries(w.time);
+    if (held) w.holdBoundaries();
     w.rebuildNeighbors();
     clock.lap(Phase::NeighborSearch);
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
@@ -636,6 +660,8 @@ double World::step(double maxDt) {
     w.pairTables.build(w.materials.size(), w.pairs);
     ctx.pairs = &w.pairTables;
     const double dt = w.solver->step(ctx);
+    // Where the step ends: with the clock held (settle), where it started.
+    const double end = held ? w.time : w.time + dt;
     // Dye spreads over this step's neighbour lists at the positions the solver moved to.
     if (w.pairTables.anyDiffusion())
         w.diffusion.apply(w.particles, w.neighbors, w.periodic, w.pairTables, w.h, static_cast<float>(dt), w.threads);
@@ -644,7 +670,7 @@ double World::step(double maxDt) {
     const float margin = w.solver->wallMargin() * w.def.particleSpacing;
     // Moving obstacles first: where one squeezes a particle against a wall, the wall wins.
     for (const Impl::Mover& m : w.movers)
-        projectOutOfMovingObstacle(w.obstacles[m.index], m.motion.pose(w.time + dt), w.particles, margin, w.threads);
+        projectOutOfMovingObstacle(w.obstacles[m.index], m.motion.pose(end), w.particles, margin, w.threads);
     if (w.def.walls) {
         // No walls across a periodic axis.
         constexpr float inf = std::numeric_limits<float>::infinity();
@@ -658,15 +684,15 @@ double World::step(double maxDt) {
         walls.enforce(w.particles, w.threads);
     }
     projectOutOfObstacles(w.fixedObstacles, w.particles, margin, w.threads);
-    for (const Impl::Paddle& paddle : w.paddles) paddle.maker.project(w.time + dt, w.particles, margin, w.threads);
+    for (const Impl::Paddle& paddle : w.paddles) paddle.maker.project(end, w.particles, margin, w.threads);
     applyDampingZones(w.dampingZones, w.particles, dt, w.threads);
     if (w.periodic.any)
         parallelFor(w.particles.size(), w.threads, [&](std::uint32_t i) {
             w.particles.position[i] = w.periodic.wrap(w.particles.position[i]);
         });
     std::optional<Divergence> diverged = w.updateStats(dt);
-    w.emit(w.time, dt);
-    w.time += dt;
+    if (!held) w.emit(w.time, dt);
+    w.time = end;
     clock.lap(Phase::Integration);
     if (diverged) {
         diverged->step = w.stats.steps;
@@ -688,6 +714,22 @@ void World::advance(double duration, const std::function<void()>& afterStep) {
         if (afterStep) afterStep();
     }
     impl_->time = std::max(impl_->time, end);
+}
+
+SettleReport World::settle(double seconds) {
+    if (!(seconds >= 0.0) || !std::isfinite(seconds))
+        throw std::invalid_argument("settle.time: must be finite and >= 0, got " + std::to_string(seconds));
+    Impl& w = *impl_;
+    SettleReport report;
+    // Steps of at most what is left, as advance() takes them, but on a held clock.
+    while (seconds - report.seconds > 1e-9) {
+        report.seconds += w.step(seconds - report.seconds, Impl::Clock::Held);
+        ++report.steps;
+    }
+    report.maxSpeed = w.stats.maxSpeed;
+    for (glm::vec3& v : w.particles.velocity) v = glm::vec3(0.0f);
+    w.stats = WorldStats{};
+    return report;
 }
 
 double World::time() const { return impl_->time; }

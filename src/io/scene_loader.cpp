@@ -95,4 +95,13 @@ World buildWorld(const Scene& scene) {
     return world;
 }
 
+World buildSettledWorld(const Scene& scene, SettleReport* report) {
+    World world = buildWorld(scene);
+    if (scene.settleTime > 0.0) {
+        const SettleReport settled = world.settle(scene.settleTime);
+        if (report) *report = settled;
+    }
+    return world;
+}
+
 }  // namespace tide::io

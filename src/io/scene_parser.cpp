@@ -782,7 +782,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
 
     Reader r;
     Scene scene;
-    if (!r.object(root, "", {"name", "unit_scale", "domain", "gravity", "particle_spacing", "end_time", "solver",
+    if (!r.object(root, "", {"name", "unit_scale", "domain", "gravity", "particle_spacing", "end_time", "settle", "solver",
                              "materials", "material_pairs", "blocks", "emitters", "obstacles", "wavemaker", "damping", "gauges", "probes", "output", "camera"}))
         throw SceneError(r.problems);
 
@@ -817,6 +817,8 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     if (auto g = r.vec3(root, "gravity", "", false)) w.gravity = *g * scale;
     if (auto v = r.number(root, "particle_spacing", "", true, 0.0, 1e6, true)) w.particleSpacing = static_cast<float>(*v) * scale;
     if (auto v = r.number(root, "end_time", "", true, 0.0, 1e7, true)) scene.endTime = *v;
+    if (root.contains("settle") && r.object(root["settle"], "settle", {"time"}))
+        if (auto v = r.number(root["settle"], "time", "settle", true, 0.0, 1e7)) scene.settleTime = *v;
     if (root.contains("solver")) readSolver(r, root["solver"], scene);
 
     if (domainOk) {

@@ -49,6 +49,7 @@ struct Scene {
     std::string name;
     WorldDef world;
     double endTime = 1.0;                     ///< s
+    double settleTime = 0.0;                  ///< s, key "settle.time": World::settle before the run (0: none)
     std::vector<MaterialDef> materials;
     std::vector<MaterialPairDef> materialPairs;  ///< key "material_pairs", material indices resolved from names
     std::vector<ObstacleDef> obstacles;
@@ -98,5 +99,8 @@ std::string memoryShortfall(const Scene& scene);
 
 /// Create the world a scene describes: materials, obstacles, wave makers, damping zones, blocks, emitters.
 World buildWorld(const Scene& scene);
+/// buildWorld, then World::settle for the scene's settle.time (when > 0): the world a run
+/// starts from. `report` (if given) receives what the settling did.
+World buildSettledWorld(const Scene& scene, SettleReport* report = nullptr);
 
 }  // namespace tide::io
