@@ -24,7 +24,7 @@ using namespace tide;
 
 struct Cloud {
     std::vector<glm::vec4> points;  ///< (x, w)
-    std::vector<glm::vec4> velocities;  ///< (v, 0)
+    std::vector<glm::vec4> velocities;  ///< (v, u): u a second weight (1/ρ in the viscosity)
 };
 
 Cloud randomCloud(std::size_t n, float size, unsigned seed) {
@@ -33,7 +33,7 @@ Cloud randomCloud(std::size_t n, float size, unsigned seed) {
     Cloud cloud;
     for (std::size_t i = 0; i < n; ++i) {
         cloud.points.emplace_back(position(random), position(random), position(random), weight(random));
-        cloud.velocities.emplace_back(speed(random), speed(random), speed(random), 0.0f);
+        cloud.velocities.emplace_back(speed(random), speed(random), speed(random), weight(random));
     }
     return cloud;
 }
@@ -42,6 +42,7 @@ Cloud randomCloud(std::size_t n, float size, unsigned seed) {
 /// every count, so each length 0 … candidates.size() is covered).
 void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std::uint32_t>& candidates,
                      const kernels::CubicSpline& w, const PeriodicBox& box) {
+    const double h = w.h;
     const glm::vec3 xi(cloud.points[i]);
     const glm::vec3 vi(cloud.velocities[i]);
     PairKernels factors;
@@ -59,7 +60,8 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
     for (std::size_t count = 0; count <= candidates.size(); ++count) {
         const pair_sums::Neighbors neighbors{indices.data(), codes.data(), count};
         double kernel = 0.0, kernelScale = 0.0, divergence = 0.0, divergenceScale = 0.0;
-        glm::dvec3 gradient(0.0), gradientScale(0.0);
+        glm::dvec3 gradient(0.0), gradientScale(0.0), viscous(0.0), viscousScale(0.0);
+        const double epsilon = 0.01 * 0.25 * h * h;
         for (std::size_t k = 0; k < count; ++k) {
             const std::uint32_t j = candidates[k];
             const glm::dvec3 r(box.delta(xi, glm::vec3(cloud.points[j])));
@@ -72,8 +74,18 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
             const double rate = wj * m * glm::dot(glm::dvec3(vi - glm::vec3(cloud.velocities[j])), r);
             divergence += rate;
             divergenceScale += std::abs(rate);
+            const double length = glm::length(r);
+            const glm::dvec3 shear = (wj * cloud.velocities[j].w * length * w.derivative(static_cast<float>(length)) /
+                                      (length * length + epsilon)) *
+                                     glm::dvec3(vi - glm::vec3(cloud.velocities[j]));
+            viscous += shear;
+            viscousScale += glm::abs(shear);
         }
         ASSERT_TRUE(count == 0 || gradientScale.x + gradientScale.y + gradientScale.z > 0.0);  // codes that count
+        const glm::vec3 v = pair_sums::viscousSum(neighbors, cloud.points.data(), cloud.velocities.data(), xi, vi, w,
+                                                  static_cast<float>(epsilon), box);
+        for (int axis = 0; axis < 3; ++axis)
+            EXPECT_NEAR(v[axis], viscous[axis], 1e-5 * viscousScale[axis] + 1e-12) << count << " neighbours";
         for (const auto order : {pair_sums::Order::Lanes, pair_sums::Order::Sequential}) {
             const float initial = 0.25f;
             // The density pass writes each pair's code, bit for bit encode()'s, and nothing past the list.

@@ -215,11 +215,11 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
         k_[i] = kWarmStart * p.warmDivergence[i];
         divergenceK_[i] = k_[i];
     });
-    // Applies k_, then packs the velocities as (v_j, 0) rows into positionK_ (free until the
-    // next applyPressure) for densityRate's SIMD loads.
+    // Applies k_, then packs the velocities as (v_j, 1/ρ_j) rows into positionK_ (free until
+    // the next applyPressure) for densityRate's SIMD loads, and the viscosity's after the solve.
     auto push = [&] {
         applyPressure(ctx, {});
-        parallelFor(n, ctx.threads, [&](std::uint32_t i) { positionK_[i] = glm::vec4(p.velocity[i], 0.0f); });
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) { positionK_[i] = glm::vec4(p.velocity[i], 1.0f / p.density[i]); });
     };
     push();
     int iteration = 0;
@@ -348,7 +348,13 @@ double DfsphBender2017::step(StepContext& ctx) {
     ctx.lap(Phase::PressureSolve);
 
     // Straight into the particles' acceleration, which the step reports: no copy of it kept.
+    // The divergence solve left (v_j, 1/ρ_j) in positionK_ (one rest density: (x_j, m_j) rows).
+    if (contrast_.uniform()) {
+        ctx.positionMassRows = positionMass_.data();
+        ctx.velocityRows = positionK_.data();
+    }
     const float tensionAccel = sph::addNonPressureForces(ctx, p.acceleration);
+    ctx.positionMassRows = ctx.velocityRows = nullptr;
     ctx.lap(Phase::NonPressureForces);
     // The step limits from a given max_dt: explicit forces, a density contrast, pressure speed.
     const float pressureSpeed = sph::pressureSpeedStep(ctx);

@@ -77,6 +77,20 @@ float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const g
     return sum;
 }
 
+template <bool Periodic>
+glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                     const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                     const PeriodicBox& box) {
+    glm::vec3 sum(0.0f);
+    for (std::size_t k = 0; k < neighbors.count; ++k) {
+        const std::uint32_t j = neighbors.index[k];
+        const glm::vec3 d = delta<Periodic>(xi, points[j], box);
+        const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+        sum += (points[j].w * velocities[j].w * r * w.derivative(r) / (r * r + epsilon)) * (vi - glm::vec3(velocities[j]));
+    }
+    return sum;
+}
+
 }  // namespace tide::pair_sums::sequential
 #endif  // TIDE_PAIR_SUMS_SEQUENTIAL
 
@@ -109,6 +123,12 @@ float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, co
 template <bool Periodic>
 glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, const PeriodicBox& box) {
     return sequential::gradientSum<Periodic>(neighbors, points, xi, box);
+}
+template <bool Periodic>
+glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                      const PeriodicBox& box) {
+    return sequential::viscousSum<Periodic>(neighbors, points, velocities, xi, vi, w, epsilon, box);
 }
 template <bool Periodic>
 float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
@@ -304,6 +324,36 @@ float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const 
     return hn::GetLane(hn::SumOfLanes(d, sum));
 }
 
+template <bool Periodic>
+glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                      const PeriodicBox& box) {
+    const D d;
+    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
+    const V vx = hn::Set(d, vi.x), vy = hn::Set(d, vi.y), vz = hn::Set(d, vi.z);
+    const V invH = hn::Set(d, w.invH), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), zero = hn::Zero(d);
+    const V eps = hn::Set(d, epsilon), c24 = hn::Set(d, 24.0f), c6 = hn::Set(d, 6.0f);
+    V sx = zero, sy = zero, sz = zero;
+    for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
+        const Columns j = LoadRows(points, neighbors, k);
+        const Columns v = LoadRows(velocities, neighbors, k);
+        const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
+        const V r2 = hn::Add(hn::Add(hn::Mul(r.x, r.x), hn::Mul(r.y, r.y)), hn::Mul(r.z, r.z));
+        const V q = hn::Mul(hn::Sqrt(r2), invH);
+        // r W'(r) h/σ = q (24(½ − q)₊² − 6(1 − q)₊²) h², the σ/h² outside the sum
+        const V outer = hn::Max(hn::Sub(one, q), zero), inner = hn::Max(hn::Sub(half, q), zero);
+        const V rDerivative = hn::Mul(q, hn::Sub(hn::Mul(c24, hn::Mul(inner, inner)), hn::Mul(c6, hn::Mul(outer, outer))));
+        const V weight = hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), hn::Mul(j.w, v.w));
+        const V s = hn::Div(hn::Mul(weight, rDerivative), hn::Add(r2, eps));
+        sx = hn::MulAdd(s, hn::Sub(vx, v.x), sx);
+        sy = hn::MulAdd(s, hn::Sub(vy, v.y), sy);
+        sz = hn::MulAdd(s, hn::Sub(vz, v.z), sz);
+    }
+    const float scale = w.sigma;  // r W'(r) = σ q (24 …) with q = r/h: σ/h · r = σ q
+    return scale * glm::vec3(hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)),
+                             hn::GetLane(hn::SumOfLanes(d, sz)));
+}
+
 #endif  // HWY_TARGET == HWY_SCALAR
 
 float KernelSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
@@ -326,6 +376,12 @@ float DivergenceSumImpl(const Neighbors& neighbors, const glm::vec4* points, con
     return box.any ? DivergenceSumT<true>(neighbors, points, velocities, xi, vi, box)
                    : DivergenceSumT<false>(neighbors, points, velocities, xi, vi, box);
 }
+glm::vec3 ViscousSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                         const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                         const PeriodicBox& box) {
+    return box.any ? ViscousSumT<true>(neighbors, points, velocities, xi, vi, w, epsilon, box)
+                   : ViscousSumT<false>(neighbors, points, velocities, xi, vi, w, epsilon, box);
+}
 const char* InstructionSetImpl() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace HWY_NAMESPACE
@@ -339,6 +395,7 @@ HWY_EXPORT(KernelSumImpl);
 HWY_EXPORT(KernelSumAndCodesImpl);
 HWY_EXPORT(GradientSumImpl);
 HWY_EXPORT(DivergenceSumImpl);
+HWY_EXPORT(ViscousSumImpl);
 HWY_EXPORT(InstructionSetImpl);
 
 float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
@@ -369,6 +426,11 @@ float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const g
         return box.any ? sequential::divergenceSum<true>(neighbors, points, velocities, xi, vi, box)
                        : sequential::divergenceSum<false>(neighbors, points, velocities, xi, vi, box);
     return HWY_DYNAMIC_DISPATCH(DivergenceSumImpl)(neighbors, points, velocities, xi, vi, box);
+}
+glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                     const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                     const PeriodicBox& box) {
+    return HWY_DYNAMIC_DISPATCH(ViscousSumImpl)(neighbors, points, velocities, xi, vi, w, epsilon, box);
 }
 const char* instructionSet() { return HWY_DYNAMIC_DISPATCH(InstructionSetImpl)(); }
 

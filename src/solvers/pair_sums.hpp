@@ -61,6 +61,13 @@ glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const
 float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box, Order order = Order::Lanes);
 
+/// Σ_j w_j u_j r W'(r)/(r² + ε) (v_i − v_j) of the cubic spline `w`, r = |x_i − x_j|, with
+/// (x_j, w_j) = points[j] and (v_j, u_j) = velocities[j]: the fluid part of Morris et al.'s
+/// 1997 viscosity (solvers/viscosity.cpp).
+glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                     const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                     const PeriodicBox& box);
+
 /// The instruction set the sums run on here (e.g. "AVX2"), for reports.
 const char* instructionSet();
 

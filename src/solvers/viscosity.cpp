@@ -11,6 +11,7 @@
 
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
+#include "solvers/pair_sums.hpp"
 #include "solvers/solver.hpp"
 
 namespace tide {
@@ -90,18 +91,28 @@ void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
     const ParticleStore& p = ctx.particles;
     const kernels::CubicSpline w(ctx.supportRadius);
     const float h2 = ctx.supportRadius * ctx.supportRadius * 0.25f;  // smoothing length = support / 2
+    // One viscosity and the solver's packed rows: the fluid sum in SIMD lanes, 2μ Σ_j (m_j/ρ_j) f (v_i − v_j).
+    const bool lanes = ctx.positionMassRows && ctx.velocityRows &&
+                       std::all_of(ctx.materials.begin(), ctx.materials.end(),
+                                   [&](const MaterialDef& m) { return m.viscosity == ctx.materials.front().viscosity; });
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         const glm::vec3 vi = p.velocity[i];
         const float mui = ctx.materials[p.material[i]].viscosity;
         glm::vec3 sum(0.0f);
-        for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
-            const float r = glm::length(rij);
-            // r_ij · ∇W_ij / (r² + 0.01ĥ²) = r W'(r) / (r² + 0.01ĥ²) ≤ 0
-            const float f = r * w.derivative(r) / (r * r + 0.01f * h2);
-            sum += (p.mass[j] * pairViscositySum(mui, ctx.materials[p.material[j]].viscosity) / p.density[j] * f) *
-                   (vi - p.velocity[j]);
+        if (lanes) {
+            const auto neighbors = ctx.neighbors.of(i);
+            sum = (2.0f * mui) * pair_sums::viscousSum({neighbors.data(), nullptr, neighbors.size()}, ctx.positionMassRows,
+                                                       ctx.velocityRows, xi, vi, w, 0.01f * h2, ctx.periodic);
+        } else {
+            for (const std::uint32_t j : ctx.neighbors.of(i)) {
+                const glm::vec3 rij = ctx.delta(xi, p.position[j]);
+                const float r = glm::length(rij);
+                // r_ij · ∇W_ij / (r² + 0.01ĥ²) = r W'(r) / (r² + 0.01ĥ²) ≤ 0
+                const float f = r * w.derivative(r) / (r * r + 0.01f * h2);
+                sum += (p.mass[j] * pairViscositySum(mui, ctx.materials[p.material[j]].viscosity) / p.density[j] * f) *
+                       (vi - p.velocity[j]);
+            }
         }
         // Walls, mirrored: m_b = Ψ_b = ρ0_i V_b, ρ_b = ρ_i, μ_b = μ_i; v_b no-slip.
         if (mui > 0.0f) {
