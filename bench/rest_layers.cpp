@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     tide::bench::TankOptions tank;
     float gravity = 9.81f;
     double seconds = 0.5, every = 0.05, settle = 0.0;
+    float quietSpeed = 0.0f;
     bool closed = false;
     tank.addTo(app);
     app.add_flag("--closed", closed, "walls across z too (a square tank `length` wide) instead of a periodic cell");
@@ -31,6 +32,9 @@ int main(int argc, char** argv) {
     app.add_option("--seconds", seconds, "simulated time, s")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--every", every, "report interval, s")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--settle", settle, "World::settle for this long first (pre-roll, velocities zeroed), s")
+        ->capture_default_str()
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--quiet-speed", quietSpeed, "end the settling once every particle stayed below this for 0.5 s, m/s")
         ->capture_default_str()
         ->check(CLI::NonNegativeNumber);
     CLI11_PARSE(app, argc, argv);
@@ -43,9 +47,9 @@ int main(int argc, char** argv) {
         std::printf("%s, spacing %.4f m, support %.2f spacings, %u particles, %d layers; speeds in mm/s, floor first\n",
                     tank.solver.c_str(), tank.spacing, tank.supportRatio, world.particles().size(), layers);
         if (settle > 0.0) {
-            const tide::SettleReport r = world.settle(settle);
-            std::printf("settled %.2f s in %llu steps: max speed %.4f m/s before the velocities were zeroed\n", r.seconds,
-                        static_cast<unsigned long long>(r.steps), r.maxSpeed);
+            const tide::SettleReport r = world.settle(settle, quietSpeed);
+            std::printf("settled %.2f s in %llu steps%s: max speed %.4f m/s before the velocities were zeroed\n", r.seconds,
+                        static_cast<unsigned long long>(r.steps), r.quiet ? " (quiet)" : "", r.maxSpeed);
         }
         const int reports = static_cast<int>(std::lround(seconds / every));
         for (int n = 0; n < reports; ++n) {

@@ -125,6 +125,7 @@ std::vector<BrokenScene> brokenScenes() {
         {"settle time negative", smallScene(R"(, "settle": {"time": -1})"), "settle.time: must be >= 0"},
         {"settle without time", smallScene(R"(, "settle": {})"), "settle.time: missing"},
         {"settle unknown key", smallScene(R"(, "settle": {"seconds": 2})"), "settle.seconds: unknown key"},
+        {"settle speed negative", smallScene(R"(, "settle": {"time": 2, "speed": -0.01})"), "settle.speed: must be >= 0"},
         {"gauge without x", smallScene(R"(, "gauges": [{"name": "g1"}])"), "gauges[0].x"},
         {"gauge names repeat", smallScene(R"(, "gauges": [{"name": "g1", "x": 0.1}, {"name": "g1", "x": 0.15}])"), "gauges[1].name"},
         {"probe outside", smallScene(R"(, "probes": [{"name": "p", "position": [0.1, 0.1, 9]}])"), "probes[0].position"},

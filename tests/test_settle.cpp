@@ -1,5 +1,5 @@
 // World::settle, the pre-roll: the clock held (boundaries still, nothing emitted), velocities
-// zeroed, statistics restarted, bad durations refused. How still the water stays after it is
+// zeroed, statistics restarted, an early end once quiet, bad values refused. How still the water stays after it is
 // tests/test_incompressible_solvers.cpp's.
 #include <cmath>
 #include <limits>
@@ -80,6 +80,32 @@ TEST(Settle, EmitsNothing) {
     EXPECT_GT(world.particles().size(), 0u);
 }
 
+// With a quiet speed the pre-roll ends once every particle has stayed below it for
+// kSettleQuietTime: at once for water already at rest (a full box without gravity), never for
+// a block thrown at 0.3 m/s within 0.2 s.
+TEST(Settle, EndsOnceQuiet) {
+    WorldDef def;
+    def.particleSpacing = 0.02f;
+    def.domainMax = {0.2f, 0.2f, 0.2f};
+    def.gravity = {0.0f, 0.0f, 0.0f};
+    World still(def);
+    still.addMaterial({});
+    ASSERT_EQ(still.addBlock({{0, 0, 0}, {0.2f, 0.2f, 0.2f}, {}, 0}), AddStatus::Added);
+    const SettleReport quiet = still.settle(10.0, 1e-3f);
+    EXPECT_TRUE(quiet.quiet);
+    EXPECT_GE(quiet.seconds, kSettleQuietTime);
+    EXPECT_LT(quiet.seconds, kSettleQuietTime + 0.01);
+
+    def.domainMax = {0.2f, 0.3f, 0.1f};
+    def.gravity = {0.0f, -9.81f, 0.0f};
+    World thrown(def);
+    thrown.addMaterial({});
+    ASSERT_EQ(thrown.addBlock({{0, 0, 0}, {0.2f, 0.12f, 0.1f}, {0.3f, 0, 0}, 0}), AddStatus::Added);
+    const SettleReport busy = thrown.settle(0.2, 0.01f);
+    EXPECT_FALSE(busy.quiet);
+    EXPECT_NEAR(busy.seconds, 0.2, 1e-9);
+}
+
 TEST(Settle, RefusesABadDurationNamingTheField) {
     World world{WorldDef{}};
     world.addMaterial({});
@@ -89,6 +115,14 @@ TEST(Settle, RefusesABadDurationNamingTheField) {
             FAIL() << "accepted settle(" << bad << ")";
         } catch (const std::invalid_argument& e) {
             EXPECT_NE(std::string(e.what()).find("settle.time"), std::string::npos) << e.what();
+        }
+    }
+    for (const float bad : {-1.0f, std::nanf("")}) {
+        try {
+            world.settle(1.0, bad);
+            FAIL() << "accepted a quiet speed of " << bad;
+        } catch (const std::invalid_argument& e) {
+            EXPECT_NE(std::string(e.what()).find("settle.speed"), std::string::npos) << e.what();
         }
     }
     EXPECT_EQ(world.settle(0.0).steps, 0u);

@@ -61,15 +61,16 @@ void Progress::finish() {
     std::fflush(stdout);
 }
 
-SettleReport settleAndReport(World& world, double seconds, bool quiet) {
+SettleReport settleAndReport(World& world, double seconds, float quietSpeed, bool quiet) {
     if (!quiet) {
         std::printf("settling for %g s (settle.time) before frame 0...\n", seconds);
         std::fflush(stdout);
     }
-    const SettleReport settled = world.settle(seconds);
+    const SettleReport settled = world.settle(seconds, quietSpeed);
     if (!quiet)
-        std::printf("settled for %g s (%llu steps; the fastest particle at %.3g m/s), velocities zeroed: the run starts at rest\n",
-                    settled.seconds, static_cast<unsigned long long>(settled.steps), settled.maxSpeed);
+        std::printf("settled for %g s%s (%llu steps; the fastest particle at %.3g m/s), velocities zeroed: the run starts at rest\n",
+                    settled.seconds, settled.quiet ? ", quiet" : "", static_cast<unsigned long long>(settled.steps),
+                    settled.maxSpeed);
     return settled;
 }
 

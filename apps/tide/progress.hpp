@@ -9,8 +9,9 @@
 
 namespace tide::cli {
 
-/// World::settle for the scene's settle.time, saying so before and after (unless quiet).
-SettleReport settleAndReport(World& world, double seconds, bool quiet);
+/// World::settle for the scene's settle.time and settle.speed, saying so before and after
+/// (unless quiet).
+SettleReport settleAndReport(World& world, double seconds, float quietSpeed, bool quiet);
 
 class Progress {
 public:

@@ -126,7 +126,7 @@ int renderCommand(const RenderOptions& o) {
         render::Renderer renderer;
         render::OffscreenImage image(o.width, o.height);
         render::Snapshot snapshot;
-        if (scene.settleTime > 0.0) settleAndReport(*world, scene.settleTime, o.quiet);
+        if (scene.settleTime > 0.0) settleAndReport(*world, scene.settleTime, scene.settleSpeed, o.quiet);
         Progress progress(scene.endTime, frames, o.quiet);
         for (int frame = 0; frame <= frames; ++frame) {
             if (frame > 0)

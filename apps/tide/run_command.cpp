@@ -203,7 +203,7 @@ int runCommand(const RunOptions& o) {
     // continues from its checkpoint, settled already.
     if (!resuming && scene.settleTime > 0.0) {
         try {
-            settleAndReport(*world, scene.settleTime, o.quiet);
+            settleAndReport(*world, scene.settleTime, scene.settleSpeed, o.quiet);
         } catch (const DivergenceError& e) {
             std::fprintf(stderr, "tide: the simulation diverged while settling (settle.time %g s) at %s; no frame was written\n",
                          scene.settleTime, e.what());

@@ -90,8 +90,11 @@ int validateCommand(const std::string& file) {
                 periodic.c_str(), w.particleSpacing, w.particleSpacing * w.supportRatio);
     std::printf("solver     %s, end time %g s, %d frames at %g fps\n", w.solver.method.c_str(), scene.endTime,
                 static_cast<int>(scene.endTime * scene.output.fps + 1e-9) + 1, scene.output.fps);
-    if (scene.settleTime > 0.0)
-        std::printf("settle     %g s of pre-roll before frame 0 (clock held, velocities zeroed after)\n", scene.settleTime);
+    if (scene.settleTime > 0.0) {
+        std::printf("settle     up to %g s of pre-roll before frame 0", scene.settleTime);
+        if (scene.settleSpeed > 0.0f) std::printf(", ending once every particle stays below %g m/s for %g s", scene.settleSpeed, kSettleQuietTime);
+        std::printf(" (clock held, velocities zeroed after)\n");
+    }
     std::printf("materials\n");
     for (std::size_t m = 0; m < scene.materials.size(); ++m) {
         const MaterialDef& mat = scene.materials[m];

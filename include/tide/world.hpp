@@ -60,7 +60,12 @@ struct SettleReport {
     double seconds = 0.0;        ///< simulated with the clock held, s
     std::uint64_t steps = 0;
     float maxSpeed = 0.0f;       ///< m/s, the fastest particle after the last settling step, before the velocities were zeroed
+    bool quiet = false;          ///< ended early: the water had stayed below the quiet speed for kSettleQuietTime
 };
+
+/// How long (simulated, s) every particle must stay below World::settle's quiet speed for the
+/// settling to end early.
+inline constexpr double kSettleQuietTime = 0.5;
 
 /// The fluid's state interpolated at a point (World::probe); NaN where no fluid is near.
 struct ProbeSample {
@@ -231,10 +236,12 @@ public:
     /// particles rearrange and sink into a denser packing (max speeds of 0.07 m/s after 2 s
     /// in a 0.3 m tank; docs/robustness.md § Still water). This steps the solver for `seconds`
     /// of simulated time with the clock held at time(): moving boundaries stand still where
-    /// they are, emitters emit nothing. Then every velocity is zeroed and the statistics
-    /// start again; time() is unchanged. Throws std::invalid_argument naming settle.time for a
-    /// negative or non-finite `seconds`, and DivergenceError as step() does.
-    SettleReport settle(double seconds);
+    /// they are, emitters emit nothing; with a `quietSpeed` > 0 it ends sooner, once every
+    /// particle has stayed below that speed for kSettleQuietTime. Then every velocity is zeroed
+    /// and the statistics start again; time() is unchanged. Throws std::invalid_argument naming
+    /// settle.time or settle.speed for a negative or non-finite value, and DivergenceError as
+    /// step() does.
+    SettleReport settle(double seconds, float quietSpeed = 0.0f);
 
     [[nodiscard]] double time() const;
     [[nodiscard]] const ParticleStore& particles() const;

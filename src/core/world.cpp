@@ -716,15 +716,23 @@ void World::advance(double duration, const std::function<void()>& afterStep) {
     impl_->time = std::max(impl_->time, end);
 }
 
-SettleReport World::settle(double seconds) {
+SettleReport World::settle(double seconds, float quietSpeed) {
     if (!(seconds >= 0.0) || !std::isfinite(seconds))
         throw std::invalid_argument("settle.time: must be finite and >= 0, got " + std::to_string(seconds));
+    if (!(quietSpeed >= 0.0f) || !std::isfinite(quietSpeed))
+        throw std::invalid_argument("settle.speed: must be finite and >= 0, got " + std::to_string(quietSpeed));
     Impl& w = *impl_;
     SettleReport report;
+    double quietSince = 0.0;  // settling time since which every step's fastest particle was below quietSpeed
     // Steps of at most what is left, as advance() takes them, but on a held clock.
     while (seconds - report.seconds > 1e-9) {
         report.seconds += w.step(seconds - report.seconds, Impl::Clock::Held);
         ++report.steps;
+        if (!(w.stats.maxSpeed < quietSpeed)) quietSince = report.seconds;
+        if (report.seconds - quietSince >= kSettleQuietTime) {
+            report.quiet = true;
+            break;
+        }
     }
     report.maxSpeed = w.stats.maxSpeed;
     for (glm::vec3& v : w.particles.velocity) v = glm::vec3(0.0f);

@@ -98,7 +98,7 @@ World buildWorld(const Scene& scene) {
 World buildSettledWorld(const Scene& scene, SettleReport* report) {
     World world = buildWorld(scene);
     if (scene.settleTime > 0.0) {
-        const SettleReport settled = world.settle(scene.settleTime);
+        const SettleReport settled = world.settle(scene.settleTime, scene.settleSpeed);
         if (report) *report = settled;
     }
     return world;

@@ -50,6 +50,7 @@ struct Scene {
     WorldDef world;
     double endTime = 1.0;                     ///< s
     double settleTime = 0.0;                  ///< s, key "settle.time": World::settle before the run (0: none)
+    float settleSpeed = 0.0f;                 ///< m/s, key "settle.speed": World::settle's quiet speed (0: the whole time)
     std::vector<MaterialDef> materials;
     std::vector<MaterialPairDef> materialPairs;  ///< key "material_pairs", material indices resolved from names
     std::vector<ObstacleDef> obstacles;
