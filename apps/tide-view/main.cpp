@@ -61,5 +61,11 @@ int main(int argc, char** argv) {
         return 2;
     }
     // The scene's settle.time runs before the window shows the world (and again on a reset).
-    return tide::view::runViewer(tide::view::worldSource([scene] { return tide::io::buildSettledWorld(scene); }), options);
+    return tide::view::runViewer(tide::view::worldSource([scene] {
+                                     if (scene.settleTime > 0.0)
+                                         std::fprintf(stderr, "tide-view: settling for up to %g s (settle.time) first...\n",
+                                                      scene.settleTime);
+                                     return tide::io::buildSettledWorld(scene);
+                                 }),
+                                 options);
 }
