@@ -92,7 +92,8 @@ int validateCommand(const std::string& file) {
                 static_cast<int>(scene.endTime * scene.output.fps + 1e-9) + 1, scene.output.fps);
     if (scene.settleTime > 0.0) {
         std::printf("settle     up to %g s of pre-roll before frame 0", scene.settleTime);
-        if (scene.settleSpeed > 0.0f) std::printf(", ending once every particle stays below %g m/s for %g s", scene.settleSpeed, kSettleQuietTime);
+        if (scene.settleSpeed > 0.0f)
+            std::printf(", ending once every particle stays below %g m/s for %g s", scene.settleSpeed, kSettleQuietTime);
         std::printf(" (clock held, velocities zeroed after)\n");
     }
     std::printf("materials\n");

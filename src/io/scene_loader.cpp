@@ -95,12 +95,9 @@ World buildWorld(const Scene& scene) {
     return world;
 }
 
-World buildSettledWorld(const Scene& scene, SettleReport* report) {
+World buildSettledWorld(const Scene& scene) {
     World world = buildWorld(scene);
-    if (scene.settleTime > 0.0) {
-        const SettleReport settled = world.settle(scene.settleTime, scene.settleSpeed);
-        if (report) *report = settled;
-    }
+    if (scene.settleTime > 0.0) world.settle(scene.settleTime, scene.settleSpeed);
     return world;
 }
 

@@ -819,7 +819,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     if (auto v = r.number(root, "end_time", "", true, 0.0, 1e7, true)) scene.endTime = *v;
     if (root.contains("settle") && r.object(root["settle"], "settle", {"time", "speed"})) {
         if (auto v = r.number(root["settle"], "time", "settle", true, 0.0, 1e7)) scene.settleTime = *v;
-        if (auto v = r.number(root["settle"], "speed", "settle", false, 0.0, 1e6)) scene.settleSpeed = static_cast<float>(*v);
+        if (auto v = r.number(root["settle"], "speed", "settle", false, 0.0, 1e6)) scene.settleSpeed = static_cast<float>(*v) * scale;
     }
     if (root.contains("solver")) readSolver(r, root["solver"], scene);
 

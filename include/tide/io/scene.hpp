@@ -101,7 +101,7 @@ std::string memoryShortfall(const Scene& scene);
 /// Create the world a scene describes: materials, obstacles, wave makers, damping zones, blocks, emitters.
 World buildWorld(const Scene& scene);
 /// buildWorld, then World::settle for the scene's settle.time (when > 0): the world a run
-/// starts from. `report` (if given) receives what the settling did.
-World buildSettledWorld(const Scene& scene, SettleReport* report = nullptr);
+/// starts from.
+World buildSettledWorld(const Scene& scene);
 
 }  // namespace tide::io
