@@ -33,17 +33,18 @@ public:
     /// Kernel sums of the boundary particles near fluid, `near` (in the order `fluidNear` was
     /// built for: its query a is boundary particle near[a]), over the fluid near them, at the
     /// current positions (the kernel values are kept: the solves call update() every
-    /// iteration). κ_b is kept for every boundary particle, but set only for those near fluid:
-    /// the fluid reads no other.
+    /// iteration). κ_b is kept for the boundary particles near fluid only: the fluid reads no
+    /// other, and the shell has several times more (memory: issue 8).
     void prepare(const BoundaryParticles& boundary, const NeighborList& fluidNear, std::span<const std::uint32_t> near,
                  std::span<const glm::vec3> fluid, const PeriodicBox& box, const glm::vec3& gravity, float supportRadius,
                  int threads, std::span<const float> fluidScale = {}) {
         const kernels::CubicSpline w(supportRadius);
         const auto n = static_cast<std::uint32_t>(near.size());
         near_ = near;
+        boundaryCount_ = boundary.position.size();
         weightSum_.resize(n);
         gravityTerm_.resize(n);
-        kappa_.resize(boundary.position.size());
+        kappa_.resize(n);
         resizeScratch(weights_, fluidNear.pairCount());
         parallelFor(n, threads, [&](std::uint32_t a) {
             const std::uint32_t b = near[a];
@@ -60,47 +61,51 @@ public:
             }
             weightSum_[a] = weights;
             gravityTerm_[a] = lift;
-            kappa_[b] = 0.0f;
+            kappa_[a] = 0.0f;
         });
     }
 
-    /// κ_b from the fluid's κ_f over the lists and positions prepare() saw; read with kappa().
+    /// κ_b from the fluid's κ_f over the lists and positions prepare() saw; read by boundary
+    /// particle with kappa().
     void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads) {
-        update(fluidNear, fluidKappa, threads, [](std::uint32_t, float) {});
+        byBoundary_.resize(boundaryCount_);
+        update(fluidNear, fluidKappa, threads, [&](std::uint32_t b, float updated, float) { byBoundary_[b] = updated; });
     }
-    /// As above, and change[b] = (new κ_b − last κ_b)·scale for each b near fluid (the others
-    /// are left as they are): what a solve that pushes with the change of κ needs, without
-    /// keeping the last κ_b in an array of its own.
+    /// As above, but what a solve that pushes with the change of κ needs instead of κ_b:
+    /// change[b] = (new κ_b − last κ_b)·scale for each b near fluid (the others are left as
+    /// they are), with no array of κ_b over the whole shell.
     void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads, float scale,
                 std::span<float> change) {
-        update(fluidNear, fluidKappa, threads, [&](std::uint32_t b, float updated) { change[b] = (updated - kappa_[b]) * scale; });
+        update(fluidNear, fluidKappa, threads,
+               [&](std::uint32_t b, float updated, float last) { change[b] = (updated - last) * scale; });
     }
 
-    /// κ_b by boundary particle; set for those near fluid (prepare).
-    [[nodiscard]] std::span<const float> kappa() const { return kappa_; }
-    [[nodiscard]] std::span<float> kappa() { return kappa_; }
+    /// κ_b by boundary particle, from the last update() without a change; set for those near
+    /// fluid (prepare).
+    [[nodiscard]] std::span<const float> kappa() const { return byBoundary_; }
 
 private:
     template <class OnUpdate>
     void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads, OnUpdate&& onUpdate) {
         parallelFor(static_cast<std::uint32_t>(near_.size()), threads, [&](std::uint32_t a) {
-            const std::uint32_t b = near_[a];
-            float updated = kappa_[b];  // 0 (prepare) where the kernel sum is 0
+            float updated = kappa_[a];  // 0 (prepare) where the kernel sum is 0
             if (weightSum_[a] > 0.0f) {
                 const float* weight = weights_.data() + fluidNear.offset(a);
                 float sum = gravityTerm_[a];
                 for (const std::uint32_t f : fluidNear.of(a)) sum += fluidKappa[f] * *weight++;
                 updated = std::max(sum / weightSum_[a], 0.0f);
             }
-            onUpdate(b, updated);
-            kappa_[b] = updated;
+            onUpdate(near_[a], updated, kappa_[a]);
+            kappa_[a] = updated;
         });
     }
 
     std::span<const std::uint32_t> near_;  ///< the boundary particles near fluid, as prepare() saw them
     std::vector<float> weightSum_;    ///< Σ_f W_bf, per boundary particle near fluid
     std::vector<float> gravityTerm_;  ///< (g − a_b)·Σ_f (x_b − x_f) W_bf, m²/s², likewise
-    std::vector<float> kappa_;        ///< κ_b = p_b/ρ, m²/s², per boundary particle
+    std::size_t boundaryCount_ = 0;   ///< boundary particles, near fluid or not
+    std::vector<float> kappa_;        ///< κ_b = p_b/ρ, m²/s², per boundary particle near fluid
+    std::vector<float> byBoundary_;   ///< κ_b by boundary particle (update() without a change only)
     std::vector<float> weights_;      ///< W_bf per pair of the fluid-near list
 };
 

@@ -123,7 +123,7 @@ struct World::Impl {
     /// most of it is far from the water; lists and per-step arrays sized to all of it cost
     /// ~16 bytes a boundary particle.
     std::vector<std::uint32_t> boundaryNearFluid;
-    std::vector<std::uint8_t> boundaryMarks;  ///< scratch of findBoundaryNearFluid
+    std::vector<bool> boundaryMarks;  ///< scratch of findBoundaryNearFluid (one bit a boundary particle)
     std::vector<EmitterState> emitters;
     std::vector<ObstacleDef> obstacles;        ///< all of them, as defined
     std::vector<ObstacleDef> fixedObstacles;   ///< those without motion
@@ -285,9 +285,9 @@ struct World::Impl {
     /// The boundary particles some fluid particle's wall list names: the same pairs the
     /// boundary-to-fluid search would find, as both test the same distance.
     void findBoundaryNearFluid() {
-        boundaryMarks.assign(boundary.position.size(), 0);
+        boundaryMarks.assign(boundary.position.size(), false);
         for (std::uint32_t i = 0; i < particles.size(); ++i)
-            for (const std::uint32_t b : boundaryNeighbors.of(i)) boundaryMarks[b] = 1;
+            for (const std::uint32_t b : boundaryNeighbors.of(i)) boundaryMarks[b] = true;
         boundaryNearFluid.clear();
         for (std::uint32_t b = 0; b < boundaryMarks.size(); ++b)
             if (boundaryMarks[b]) {

@@ -58,16 +58,17 @@ void UniformGrid::build(std::span<const glm::vec3> positions, float minCellSize,
     const auto cells = static_cast<std::uint32_t>(dims_.x) * static_cast<std::uint32_t>(dims_.y) *
                        static_cast<std::uint32_t>(dims_.z);
 
-    cellOfParticle_.resize(n);
-    parallelFor(n, threads, [&](std::uint32_t i) { cellOfParticle_[i] = cellIndex(cellOf(positions[i])); });
-
-    // Stable counting sort: count, exclusive prefix sum, scatter in index order.
-    cellStart_.assign(static_cast<std::size_t>(cells) + 1, 0);
-    for (std::uint32_t i = 0; i < n; ++i) ++cellStart_[cellOfParticle_[i] + 1];
-    for (std::uint32_t c = 0; c < cells; ++c) cellStart_[c + 1] += cellStart_[c];
+    // Stable counting sort with no per-particle scratch (memory: issue 8): the cells are
+    // computed into sorted_ to be counted, then again while scattering, last index first,
+    // each into the slot below its cell's end; that leaves the starts one entry up.
     sorted_.resize(n);
-    std::vector<std::uint32_t> cursor(cellStart_.begin(), cellStart_.end() - 1);
-    for (std::uint32_t i = 0; i < n; ++i) sorted_[cursor[cellOfParticle_[i]]++] = i;
+    parallelFor(n, threads, [&](std::uint32_t i) { sorted_[i] = cellIndex(cellOf(positions[i])); });
+    cellStart_.assign(static_cast<std::size_t>(cells) + 1, 0);
+    for (std::uint32_t i = 0; i < n; ++i) ++cellStart_[sorted_[i] + 1];
+    for (std::uint32_t c = 0; c < cells; ++c) cellStart_[c + 1] += cellStart_[c];
+    for (std::uint32_t i = n; i-- > 0;) sorted_[--cellStart_[cellIndex(cellOf(positions[i])) + 1]] = i;
+    std::copy(cellStart_.begin() + 1, cellStart_.end(), cellStart_.begin());
+    cellStart_[cells] = n;
 }
 
 }  // namespace tide

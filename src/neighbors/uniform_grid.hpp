@@ -109,7 +109,6 @@ private:
     float invCellSize_ = 1.0f;
     glm::ivec3 dims_{1, 1, 1};
     std::vector<std::uint32_t> cellStart_{0, 0};
-    std::vector<std::uint32_t> cellOfParticle_;
     std::vector<std::uint32_t> sorted_;
 };
 

@@ -197,11 +197,11 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
     });
 }
 
-double DfsphBender2017::meanRelativeSource(const StepContext& ctx) const {
+double DfsphBender2017::meanRelativeError(const StepContext& ctx, Solve solve) const {
     const ParticleStore& p = ctx.particles;
-    if (!contrast_.uniform()) return worstMaterialMean(ctx, source_);
+    if (!contrast_.uniform()) return worstMaterialMean(ctx, [&](std::uint32_t i) { return errorLeft(i, solve); });
     const double sum = parallelSum(p.size(), ctx.threads, [&](std::uint32_t i) {
-        return static_cast<double>(source_[i] / ctx.materials[p.material[i]].restDensity);
+        return static_cast<double>(errorLeft(i, solve) / ctx.materials[p.material[i]].restDensity);
     });
     return sum / std::max<double>(1.0, p.size());
 }
@@ -209,11 +209,13 @@ double DfsphBender2017::meanRelativeSource(const StepContext& ctx) const {
 int DfsphBender2017::solveDivergence(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
-    source_.resize(n);
+    error_.resize(n);
     k_.resize(n);
+    // p.warmDivergence sums κᵛ·Δt over this solve from here on (the pressure output and the
+    // next warm start): no array of its own.
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         k_[i] = kWarmStart * p.warmDivergence[i];
-        divergenceK_[i] = k_[i];
+        p.warmDivergence[i] = k_[i];
     });
     // Applies k_, then packs the velocities as (v_j, 1/ρ_j) rows into positionK_ (free until
     // the next applyPressure) for densityRate's SIMD loads, and the viscosity's after the solve.
@@ -226,17 +228,17 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const bool interior = ctx.neighbors.of(i).size() + ctx.boundaryNeighbors.of(i).size() >= kMinNeighborsForDivergence;
-            source_[i] = interior ? std::max(densityRate(ctx, i), 0.0f) : 0.0f;  // only compression
+            error_[i] = interior ? std::max(densityRate(ctx, i), 0.0f) : 0.0f;  // only compression
         });
         // Mean relative compression rate, over the last step's length.
-        if (iteration >= ctx.solver.minIterations && meanRelativeSource(ctx) * lastDt_ <= ctx.solver.maxDensityError)
+        if (iteration >= ctx.solver.minIterations && meanRelativeError(ctx, Solve::Divergence) * lastDt_ <= ctx.solver.maxDensityError)
             break;
         // Full Jacobi steps, as the paper takes, for one rest density; with a density contrast
         // the light particles' rows are far from diagonally dominant and full steps diverge.
         const float weight = contrast_.uniform() ? 1.0f : kRelaxation;
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            k_[i] = weight * source_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
-            divergenceK_[i] += k_[i];
+            k_[i] = weight * error_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
+            p.warmDivergence[i] += k_[i];
         });
         push();
     }
@@ -251,8 +253,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     const float invDt2 = 1.0f / (dt * dt);
     std::vector<float>& kappa = kappa_;
     kappa.resize(n);
-    source_.resize(n);
-    residual_.resize(n);
+    error_.resize(n);
     k_.resize(n);
     boundaryK_.resize(nb);
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity,
@@ -304,12 +305,10 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
             parallelFor(n, ctx.threads, [&](std::uint32_t i) {
                 const float rho0 = ctx.materials[p.material[i]].restDensity;
                 // ρ* − ρ0, less the compression left to later steps
-                residual_[i] = predictedDensity(ctx, delta, w, i) - rho0 - keep * std::max(p.density[i] - rho0, 0.0f);
-                // Error left: compression anywhere, expansion only where pressure could still relax.
-                source_[i] = kappa[i] > 0.0f ? std::abs(residual_[i]) : std::max(residual_[i], 0.0f);
+                error_[i] = predictedDensity(ctx, delta, w, i) - rho0 - keep * std::max(p.density[i] - rho0, 0.0f);
             });
         });
-        const double error = meanRelativeSource(ctx);
+        const double error = meanRelativeError(ctx, Solve::Density);
         converged = error <= target;
         if (converged && iteration >= ctx.solver.minIterations) break;
         // Diverging (retaken shorter): the error doubled from where it started or from the
@@ -327,7 +326,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
         const float momentum = iteration > 0 && contrast_.uniform() && !converged ? heavyBall / dt : 0.0f;
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const float updated =
-                std::max(kappa[i] + kRelaxation * residual_[i] * alpha_[i] * invDt2 + momentum * k_[i], 0.0f);  // eq. 12
+                std::max(kappa[i] + kRelaxation * error_[i] * alpha_[i] * invDt2 + momentum * k_[i], 0.0f);  // eq. 12
             k_[i] = (updated - kappa[i]) * dt;
             kappa[i] = updated;
         });
@@ -343,7 +342,6 @@ double DfsphBender2017::step(StepContext& ctx) {
     positionK_.resize(n);
     computeAlpha(ctx);
     ctx.lap(Phase::Density);
-    divergenceK_.assign(n, 0.0f);
     const int divergenceIterations = solveDivergence(ctx);
     ctx.lap(Phase::PressureSolve);
 
@@ -424,9 +422,8 @@ double DfsphBender2017::step(StepContext& ctx) {
         p.position[i] += dtf * p.velocity[i];
         const float meanKappa = weight * kappa_[i] + lastWeight * p.warmKappa[i];
         p.warmKappa[i] = kappa_[i];
-        p.warmDivergence[i] = divergenceK_[i];
-        // The divergence solve's velocity change acts over this step.
-        p.pressure[i] = p.density[i] * (meanKappa + divergenceK_[i] / dtf);  // p = ρκ: the equivalent SPH pressure
+        // The divergence solve's velocity change (its κᵛ·Δt summed in warmDivergence) acts over this step.
+        p.pressure[i] = p.density[i] * (meanKappa + p.warmDivergence[i] / dtf);  // p = ρκ: the equivalent SPH pressure
     });
     ctx.pressureIterations = divergenceIterations + densityIterations;
     lastDt_ = dt;

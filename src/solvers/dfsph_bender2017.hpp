@@ -46,6 +46,7 @@ public:
     }
 
 private:
+    enum class Solve { Divergence, Density };
     /// Densities, kernel factors of this step's pairs and the packed positions the iterations read.
     void prepare(StepContext& ctx);
     void computeAlpha(StepContext& ctx);
@@ -76,18 +77,24 @@ private:
     /// Corrects the predicted velocities so the next positions have rest density; returns
     /// iterations. driftTime ≥ dt: the step before the free-fall limit (sph::limitFreeFall).
     int solveDensity(StepContext& ctx, float dt, float driftTime);
-    /// Mean over particles of source_[i] / ρ0_i: the solves' convergence measure (a
+    /// The error a solve has left at i, from error_: the compression rate (divergence solve),
+    /// or |ρ* − ρ0| where κ_i > 0 and the compression alone where κ_i = 0 (density solve:
+    /// expansion only counts where pressure could still relax).
+    [[nodiscard]] float errorLeft(std::uint32_t i, Solve solve) const {
+        return solve == Solve::Divergence || kappa_[i] > 0.0f ? std::abs(error_[i]) : std::max(error_[i], 0.0f);
+    }
+    /// Mean over particles of errorLeft(i) / ρ0_i: the solves' convergence measure (a
     /// parallelSum, so it does not depend on the thread count).
-    [[nodiscard]] double meanRelativeSource(const StepContext& ctx) const;
+    [[nodiscard]] double meanRelativeError(const StepContext& ctx, Solve solve) const;
     /// v_i −= Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij + Σ_b Ψ_b ((k_i + k_b)/ρ_i) ∇W_ib for the
     /// current k_; boundary particles take `boundaryK`, or mirror k_i when it is empty.
     void applyPressure(StepContext& ctx, std::span<const float> boundaryK);
 
     std::vector<float> alpha_;
-    std::vector<float> source_;        ///< error left: Dρ/Dt (divergence) or |ρ* − ρ0| (density)
-    std::vector<float> residual_;      ///< ρ* − ρ0 of the density solve, signed
+    /// The divergence solve's max(Dρ/Dt, 0), or the density solve's ρ* − ρ0, signed (one
+    /// array for both: 4 bytes a particle)
+    std::vector<float> error_;
     std::vector<float> k_;             ///< κ·Δt (divergence) or κ·Δt² (density) of one iteration
-    std::vector<float> divergenceK_;   ///< κᵛ·Δt summed over the divergence iterations, for the pressure output
     std::vector<float> kappa_;         ///< κ of the density solve so far, m²/s²
     std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
     WallPressure wall_;

@@ -106,7 +106,7 @@ void PcisphSolenthaler2009::predictCompression(StepContext& ctx, float dt) {
 
 double PcisphSolenthaler2009::meanRelativeCompression(const StepContext& ctx) const {
     const ParticleStore& p = ctx.particles;
-    if (!contrast_.uniform()) return worstMaterialMean(ctx, error_);
+    if (!contrast_.uniform()) return worstMaterialMean(ctx, [&](std::uint32_t i) { return error_[i]; });
     double sum = 0.0;
     for (std::uint32_t i = 0; i < p.size(); ++i) sum += error_[i] / ctx.materials[p.material[i]].restDensity;
     return sum / std::max<double>(1.0, p.size());
