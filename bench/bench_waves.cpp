@@ -1,19 +1,24 @@
 // Waves that last: a long flume (regular waves H = 0.04 m, T = 1 s, d = 0.3 m, piston) with
-// gauges at 1, 3, 5 and 7 wavelengths from the paddle and the damping zone after 9; reports
+// gauges at 1, 3, 5 and 7 wavelengths from the paddle (--reach: up to another odd number) and
+// the damping zone 2 wavelengths past the farthest; the solver's levers of the loss are
+// options, for ablations (docs/waves.md § Waves that last). Reports
 // the wave height at each (zero up-crossing mean over whole periods once the waves have
 // arrived) and its loss against the first gauge. Target: < 15 % loss at 5 wavelengths with
 // ≥ 8 particles per wave height (spacing 0.005 m, ~0.5 M particles: hours on 2 cores).
 //
-//   tide_wave_bench [--spacing S] [--seconds T] [--threads N] [--csv FILE]
+//   tide_wave_bench [--spacing S] [--seconds T] [--threads N] [--csv FILE] [--reach W]
+//                   [--viscosity NAME] [--mu X] [--xsph E] [--momentum M] [--max-dt S]
+//                   [--max-density-error E] [--support-ratio R]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <fstream>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include <CLI/CLI.hpp>
 
 #include <tide/world.hpp>
 
@@ -21,21 +26,10 @@
 #include "testing/scenarios.hpp"
 #include "testing/wave_analysis.hpp"
 
-int main(int argc, char** argv) {
-    float spacing = 0.005f;
-    double seconds = 0.0;
-    int threads = 0;
-    std::string csv;
-    for (int a = 1; a + 1 < argc; a += 2) {
-        if (!std::strcmp(argv[a], "--spacing")) spacing = static_cast<float>(std::atof(argv[a + 1]));
-        else if (!std::strcmp(argv[a], "--seconds")) seconds = std::atof(argv[a + 1]);
-        else if (!std::strcmp(argv[a], "--threads")) threads = std::atoi(argv[a + 1]);
-        else if (!std::strcmp(argv[a], "--csv")) csv = argv[a + 1];
-        else {
-            std::fprintf(stderr, "usage: tide_wave_bench [--spacing S] [--seconds T] [--threads N] [--csv FILE]\n");
-            return 2;
-        }
-    }
+namespace {
+
+int runFlume(float spacing, double seconds, int threads, int reach, const std::string& csv, const tide::SolverDef& solver,
+             const tide::MaterialDef& water, float supportRatio) {
     const double T = 1.0, d = 0.3, H = 0.04;
     const double omega = 2.0 * std::numbers::pi / T;
     const double k = tide::waves::waveNumber(omega, d), lambda = 2.0 * std::numbers::pi / k;
@@ -46,18 +40,21 @@ int main(int argc, char** argv) {
     paddle.waveHeight = static_cast<float>(H);
     paddle.period = static_cast<float>(T);
     paddle.rampTime = 2.0f;
-    const float length = static_cast<float>(paddle.x + 9.0 * lambda + 1.5 * lambda);
-    // Long enough for the front at 7 λ plus six whole periods (a ramp and a margin).
-    if (seconds <= 0.0) seconds = paddle.rampTime + 7.0 * lambda / cg + 8.0 * T;
-    tide::SolverDef solver;
-    solver.xsph = 0.0f;      // as the wave scenes: both cost wave height (docs/waves.md)
-    solver.momentum = 0.0f;
+    const float length = static_cast<float>(paddle.x + (reach + 2.0) * lambda + 1.5 * lambda);
+    // Long enough for the front at the farthest gauge plus six whole periods (a ramp and a margin).
+    if (seconds <= 0.0) seconds = paddle.rampTime + reach * lambda / cg + 8.0 * T;
     tide::World world = tide::scenarios::waveFlume(spacing, length, paddle.depth, paddle, static_cast<float>(1.5 * lambda),
-                                                   threads, 4, solver);
-    const std::vector<double> at{1.0, 3.0, 5.0, 7.0};
+                                                   threads, tide::scenarios::periodicWidthInSpacings(supportRatio), solver,
+                                                   supportRatio, water);
+    std::vector<double> at;
+    for (int g = 1; g <= reach; g += 2) at.push_back(g);
     std::vector<tide::waves::Record> records(at.size(), tide::waves::Record{0.02, 0.02, {}});
     std::printf("flume %.2f m, %u particles, spacing %.4f m (%.1f per wave height), lambda %.3f m, %.1f s\n", length,
                 world.particles().size(), spacing, H / spacing, lambda, seconds);
+    std::printf("viscosity %s, mu %g Pa s, xsph %g, momentum %g, max_dt %g s, max_density_error %g, support ratio %g\n",
+                solver.viscosity.empty() ? "(solver's own)" : solver.viscosity.c_str(), water.viscosity, solver.xsph,
+                solver.momentum, solver.maxDt, solver.maxDensityError, supportRatio);
+    std::fflush(stdout);
     const auto start = std::chrono::steady_clock::now();
     const float z = 0.5f * world.def().domainMax.z;
     for (int s = 0; s < static_cast<int>(std::lround(seconds / 0.02)); ++s) {
@@ -83,4 +80,42 @@ int main(int argc, char** argv) {
             out << spacing << ',' << at[g] << ',' << heights[g] << ',' << H << ',' << 1.0 - heights[g] / heights[0] << '\n';
     }
     return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Wave height along a long flume (regular waves H = 0.04 m, T = 1 s, d = 0.3 m, piston)"};
+    float spacing = 0.005f;
+    double seconds = 0.0;
+    int threads = 0, reach = 7;
+    std::string csv;
+    // The levers of the wave loss (docs/waves.md § Waves that last), defaults as the wave scenes.
+    tide::SolverDef solver;
+    solver.xsph = 0.0f;  // as the wave scenes: XSPH and momentum cost wave height (docs/waves.md)
+    solver.momentum = 0.0f;
+    tide::MaterialDef water;
+    float supportRatio = tide::WorldDef{}.supportRatio;
+    app.add_option("--spacing", spacing, "particle spacing, m")->capture_default_str()->check(CLI::PositiveNumber);
+    app.add_option("--seconds", seconds, "simulated time, s (0: until the farthest gauge has six periods)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--threads", threads, "worker threads (0: all)")->check(CLI::NonNegativeNumber);
+    app.add_option("--csv", csv, "also write the heights to this CSV file");
+    app.add_option("--reach", reach, "gauges at 1, 3, 5, ... wavelengths up to this (the flume holds 2 more before its damping zone)")
+        ->capture_default_str()->check(CLI::Range(1, 99));
+    app.add_option("--viscosity", solver.viscosity, "solver.viscosity (empty: the solver's own)");
+    app.add_option("--mu", water.viscosity, "the water's dynamic viscosity, Pa s")->capture_default_str()->check(CLI::NonNegativeNumber);
+    app.add_option("--xsph", solver.xsph, "solver.xsph")->capture_default_str()->check(CLI::Range(0.0, 1.0));
+    app.add_option("--momentum", solver.momentum, "solver.momentum")->capture_default_str()->check(CLI::Range(0.0, 0.95));
+    app.add_option("--max-dt", solver.maxDt, "solver.max_dt, s")->capture_default_str()->check(CLI::PositiveNumber);
+    app.add_option("--max-density-error", solver.maxDensityError, "solver.max_density_error")
+        ->capture_default_str()->check(CLI::PositiveNumber);
+    app.add_option("--support-ratio", supportRatio, "kernel support / spacing")->capture_default_str()->check(CLI::Range(1.0, 4.0));
+    CLI11_PARSE(app, argc, argv);
+    try {
+        return runFlume(spacing, seconds, threads, reach, csv, solver, water, supportRatio);
+    } catch (const std::exception& e) {  // a bad --viscosity, a diverging flume
+        std::fprintf(stderr, "tide_wave_bench: %s\n", e.what());
+        return 1;
+    }
 }

@@ -63,7 +63,8 @@ inline World damBreak(float spacing, int threads = 0, float length = 1.6f, float
 /// side-wall friction; a wave maker with its face at `paddle.x` and a damping zone over the
 /// last `dampingLength` metres. The domain is twice the depth high. `supportRatio` 0: the default.
 inline World waveFlume(float spacing, float length, float depth, const WaveMakerDef& paddle, float dampingLength,
-                       int threads = 0, int widthInSpacings = 4, const SolverDef& solver = {}, float supportRatio = 0.0f) {
+                       int threads = 0, int widthInSpacings = 4, const SolverDef& solver = {}, float supportRatio = 0.0f,
+                       const MaterialDef& water = {}) {
     WorldDef def;
     def.solver = solver;
     if (supportRatio > 0.0f) def.supportRatio = supportRatio;
@@ -73,7 +74,7 @@ inline World waveFlume(float spacing, float length, float depth, const WaveMaker
     def.particleSpacing = spacing;
     def.threads = threads;
     World world(def);
-    world.addMaterial(MaterialDef{});
+    world.addMaterial(water);
     world.addWaveMaker(paddle);
     if (dampingLength > 0.0f) world.addDampingZone({length - dampingLength, length, 10.0f});
     // Fill from the paddle face; the block's lattice starts half a spacing in front of it.
