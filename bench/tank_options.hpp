@@ -20,6 +20,7 @@ struct TankOptions {
     float length = 0.68f, depth = 0.3f;
     float maxDensityError = SolverDef{}.maxDensityError, xsph = -1.0f, momentum = -1.0f;
     int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows
+    int maxIterations = SolverDef{}.maxIterations;
     int threads = 1;
 
     void addTo(CLI::App& app) {
@@ -32,6 +33,7 @@ struct TankOptions {
         app.add_option("--max-density-error", maxDensityError, "solver.max_density_error")->capture_default_str();
         app.add_option("--xsph", xsph, "solver.xsph (negative: the solver's default)")->capture_default_str();
         app.add_option("--momentum", momentum, "solver.momentum (negative: the solver's default)")->capture_default_str();
+        app.add_option("--max-iterations", maxIterations, "solver.max_iterations")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--threads", threads, "worker threads")->capture_default_str();
     }
     [[nodiscard]] int widthInSpacings() const {
@@ -46,6 +48,7 @@ struct TankOptions {
         def.solver.maxDensityError = maxDensityError;
         def.solver.xsph = xsph;
         def.solver.momentum = momentum;
+        def.solver.maxIterations = maxIterations;
         return def;
     }
 };

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,8 @@ void expectIdentical(const World& a, const World& b) {
     EXPECT_EQ(a.time(), b.time());
     EXPECT_EQ(a.stats().steps, b.stats().steps);
     EXPECT_EQ(a.stats().pressureIterationsSum, b.stats().pressureIterationsSum);
+    EXPECT_EQ(a.stats().unconvergedSolves, b.stats().unconvergedSolves);
+    EXPECT_EQ(a.stats().recentUnconverged, b.stats().recentUnconverged);
 }
 
 /// Runs `first` steps, checkpoints through the file format, runs `second` more; a fresh
@@ -91,6 +94,46 @@ TEST(Checkpoint, MovingObstaclesResumeBitIdentically) {
     // Their motion is a function of time: the restored World places them where they were.
     expectResumesIdentically([] { return scenarios::pushedPlate(0.02f, 0.8f, 0.1f, 0.2f, 2); }, 15, 15);
     expectResumesIdentically([] { return scenarios::spinningCylinder(0.02f, 0.2f, 0.04f, 3.0f, 1.0f, 2, "pcisph"); }, 12, 12);
+}
+
+TEST(Checkpoint, AVersion2FileWithoutTheUnconvergedCountStillResumes) {
+    const auto make = [] { return scenarios::damBreak(0.04f, 1, 0.4f, 0.12f, 0.12f, 25, "dfsph"); };
+    World uninterrupted = make();
+    for (int s = 0; s < 5; ++s) uninterrupted.step(1.0);
+    const std::string v3 = io::encodeCheckpoint(uninterrupted.saveState(), "app");
+    // Version 2 is version 3 without the 12 bytes of the two unconverged-solve stats, which
+    // follow the pressure iteration sum: time, sound speed, reorder counter (16 bytes), then
+    // the stats up to that sum (48 bytes). The header: magic, version, byte order, size, CRC.
+    constexpr std::size_t header = 8 + 4 + 4 + 8 + 4, cut = header + 16 + 48;
+    std::string payload = v3.substr(header, cut - header) + v3.substr(cut + 12);
+    std::string v2 = v3.substr(0, header);
+    const std::uint32_t version = 2, crc = io::crc32(payload);
+    const std::uint64_t size = payload.size();
+    std::memcpy(v2.data() + 8, &version, 4);
+    std::memcpy(v2.data() + 16, &size, 8);
+    std::memcpy(v2.data() + 24, &crc, 4);
+    v2 += payload;
+
+    io::Checkpoint c = io::decodeCheckpoint(v2, "memory");
+    EXPECT_EQ(c.world.stats.unconvergedSolves, 0u);
+    EXPECT_EQ(c.world.stats.pressureIterationsSum, uninterrupted.stats().pressureIterationsSum);
+    World resumed = make();
+    resumed.restoreState(std::move(c.world));
+    for (int s = 0; s < 5; ++s) {
+        uninterrupted.step(1.0);
+        resumed.step(1.0);
+    }
+    expectIdentical(uninterrupted, resumed);
+
+    std::string v9 = v3;
+    const std::uint32_t future = 9;
+    std::memcpy(v9.data() + 8, &future, 4);
+    try {
+        (void)io::decodeCheckpoint(v9, "memory");
+        ADD_FAILURE() << "a version 9 checkpoint was read";
+    } catch (const io::CheckpointError& e) {
+        EXPECT_NE(std::string(e.what()).find("version 9, this tide reads 2 to 3"), std::string::npos) << e.what();
+    }
 }
 
 TEST(Checkpoint, EveryFlippedByteAndEveryTruncationIsRefused) {
@@ -181,6 +224,58 @@ TEST(DivergenceGuard, AHugeForcedTimeStepStopsAtTheStepWithTheParticleAndQuantit
     EXPECT_EQ(world.stats().steps, caught->step);
     world.clear();
     EXPECT_FALSE(world.divergence());
+}
+
+// The density solve of 0.3 m of water at 2 cm without the heavy ball needs ~35 Jacobi
+// iterations a step (docs/waves.md); capped at 3 it stops short in every step and leaves the
+// water compressed beyond its tolerance. The stats count those steps; a divergence after
+// them names them, with the knobs that help.
+TEST(DivergenceGuard, PressureSolvesThatStopShortAreCountedAndNamedInADivergence) {
+    WorldDef def;
+    def.particleSpacing = 0.02f;
+    def.threads = 2;
+    def.solver.momentum = 0.0f;
+    WorldDef cappedDef = def;
+    cappedDef.solver.maxIterations = 3;
+    World capped = scenarios::stillTank(cappedDef, 0.4f, 0.3f, 4);
+    World uncapped = scenarios::stillTank(def, 0.4f, 0.3f, 4);
+    for (int s = 0; s < 100; ++s) {
+        capped.step(1.0);
+        uncapped.step(1.0);
+    }
+    const WorldStats& c = capped.stats();
+    const WorldStats& u = uncapped.stats();
+    std::printf("capped at 3: %llu of %llu steps unconverged, compression %.3f %%; uncapped: %llu, %.3f %%\n",
+                static_cast<unsigned long long>(c.unconvergedSolves), static_cast<unsigned long long>(c.steps),
+                100.0 * c.meanCompression, static_cast<unsigned long long>(u.unconvergedSolves), 100.0 * u.meanCompression);
+    EXPECT_GE(c.unconvergedSolves, 90u);
+    EXPECT_EQ(c.recentUnconverged, 0xffffffffu);
+    EXPECT_GT(c.meanCompression, def.solver.maxDensityError);
+    EXPECT_EQ(u.unconvergedSolves, 0u);
+    EXPECT_EQ(u.recentUnconverged, 0u);
+    EXPECT_LE(u.meanCompression, def.solver.maxDensityError);
+
+    // Forced 50 ms steps (≈10× the step limits) with the cap: the solves stop short, then it blows up.
+    cappedDef.solver.minDt = cappedDef.solver.maxDt = 0.05f;
+    World forced = scenarios::stillTank(cappedDef, 0.4f, 0.3f, 4);
+    std::optional<Divergence> caught;
+    for (int s = 0; s < 50 && !caught; ++s) {
+        try {
+            forced.step(1.0);
+        } catch (const DivergenceError& e) {
+            caught = e.divergence;
+        }
+    }
+    ASSERT_TRUE(caught) << "50 ms steps of 0.3 m of water at 2 cm did not diverge in 50 steps";
+    const std::string text = caught->describe();
+    std::printf("%s\n", text.c_str());
+    EXPECT_EQ(caught->unconvergedOfLast32, static_cast<int>(std::min<std::uint64_t>(forced.stats().steps, 32)));
+    EXPECT_EQ(caught->maxIterations, 3);
+    const std::string window = std::to_string(std::min<std::uint64_t>(caught->step, 32));
+    EXPECT_NE(text.find(std::to_string(caught->unconvergedOfLast32) + " of the last " + window +
+                        " steps (solver.max_iterations 3)"),
+              std::string::npos);
+    EXPECT_NE(text.find("raise solver.max_iterations"), std::string::npos);
 }
 
 TEST(DivergenceGuard, ASaneDamBreakNeverTrips) {

@@ -37,7 +37,7 @@ std::string expectFullStats(const fs::path& out) {
     stats << file.rdbuf();
     for (const char* key : {"particles", "steps", "sim_time", "wall_time", "particle_steps_per_second", "dt_min",
                             "dt_mean", "dt_max", "max_density_error", "avg_density_error", "particles_lost",
-                            "threads", "solver"})
+                            "threads", "solver", "pressure_iterations_mean", "pressure_unconverged_steps"})
         EXPECT_NE(stats.str().find(std::string("\"") + key + "\":"), std::string::npos) << key;
     EXPECT_NE(stats.str().find("\"particles_lost\": 0"), std::string::npos) << stats.str();
     return stats.str();
@@ -338,6 +338,27 @@ TEST(Cli, ShippedStirredTankListsItsMotionAndLosesNoParticle) {
     const Result r = run(kTide + " run " + scene + " --quiet --end-time 0.1 --out " + out.string());
     ASSERT_EQ(r.exit, 0) << r.output;
     expectFullStats(out);  // particles_lost 0 at every frame
+}
+
+// A pressure solve capped short of its tolerance leaves the water compressed: the run goes on,
+// says so on stderr once and counts those steps in stats.json.
+TEST(Cli, PressureSolvesThatStopShortAreReportedAndCounted) {
+    const fs::path out = scratch("unconverged_out");
+    const std::string capped = smallScene(R"(, "solver": {"momentum": 0, "min_iterations": 0, "max_iterations": 1})");
+    const Result r = run(kTide + " run " + writeScene("unconverged", capped).string() + " --quiet --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    EXPECT_NE(r.output.find("warning: the pressure solve stopped short of its density tolerance in "), std::string::npos)
+        << r.output;
+    EXPECT_NE(r.output.find("(solver.max_iterations 1)"), std::string::npos) << r.output;
+    const std::string stats = expectFullStats(out);
+    EXPECT_EQ(stats.find("\"pressure_unconverged_steps\": 0"), std::string::npos) << stats;
+
+    const fs::path plainOut = scratch("converged_out");
+    const Result plain = run(kTide + " run " + writeScene("converged", smallScene()).string() + " --quiet --out " +
+                             plainOut.string());
+    ASSERT_EQ(plain.exit, 0) << plain.output;
+    EXPECT_EQ(plain.output.find("warning"), std::string::npos) << plain.output;
+    EXPECT_NE(expectFullStats(plainOut).find("\"pressure_unconverged_steps\": 0"), std::string::npos);
 }
 
 TEST(Cli, DivergenceExitsOneAndKeepsEarlierFrames) {

@@ -54,6 +54,7 @@ void writeStats(const fs::path& file, const World& world, double wall, std::uint
     j["solver"] = world.def().solver.method;
     j["pressure_iterations_mean"] =
         s.steps ? static_cast<double>(s.pressureIterationsSum) / static_cast<double>(s.steps) : 0.0;
+    j["pressure_unconverged_steps"] = s.unconvergedSolves;
     io::writeFileAtomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 
@@ -274,6 +275,13 @@ int runCommand(const RunOptions& o) {
         const double wall = wallSoFar();
         measurements.write(dir);
         writeStats(dir / "stats.json", *world, wall, particleSteps, lost);
+        if (const WorldStats& s = world->stats(); s.unconvergedSolves > 0)
+            std::fprintf(stderr,
+                         "tide: warning: the pressure solve stopped short of its density tolerance in %llu of %llu steps "
+                         "(solver.max_iterations %d): the water was compressed beyond solver.max_density_error there; "
+                         "raise solver.max_iterations or shorten solver.max_dt\n",
+                         static_cast<unsigned long long>(s.unconvergedSolves), static_cast<unsigned long long>(s.steps),
+                         world->def().solver.maxIterations);
         if (!o.quiet)
             std::printf("%d frames of %u particles in %s (%.1f s wall, %.2f M particle-steps/s)\n", frames + 1,
                         world->particles().size(), dir.string().c_str(), wall, particleSteps / std::max(wall, 1e-9) / 1e6);

@@ -46,6 +46,11 @@ struct WorldStats {
     int lastPressureIterations = 0;     ///< iterations of the last step's pressure solve (0: explicit)
     // Running totals over every step since creation:
     std::uint64_t pressureIterationsSum = 0;
+    /// Steps whose pressure solve stopped (at solver.max_iterations, or diverging) short of
+    /// its density tolerance: the fluid carries the compression left over into the next step.
+    std::uint64_t unconvergedSolves = 0;
+    /// Bit k set: the pressure solve of the step k steps before the last (0: the last) did not converge.
+    std::uint32_t recentUnconverged = 0;
     double dtMin = 0.0;                 ///< s, shortest step (0 before the first)
     double dtMax = 0.0;                 ///< s, longest step
     double dtSum = 0.0;                 ///< s, simulated time stepped
@@ -105,6 +110,10 @@ struct Divergence {
     /// The bound it broke: Speed: kRunawaySupports·h/Δt, m/s; Compression: the fluid's mean
     /// compression (above kCollapsedCompression); 0 for non-finite values.
     float limit = 0.0f;
+    /// Of the 32 steps up to it, those whose pressure solve stopped short of its tolerance, and
+    /// the solver.max_iterations they had: the usual way a pressure solve lets water collapse.
+    int unconvergedOfLast32 = 0;
+    int maxIterations = 0;
     /// One line for people, e.g. "step 12 (t = 0.034 s): particle 5 (id 7) has a non-finite velocity (nan)".
     [[nodiscard]] std::string describe() const;
 };

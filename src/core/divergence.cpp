@@ -1,6 +1,8 @@
 // Divergence::describe: the one line a user reads when a run stops.
 #include <tide/world.hpp>
 
+#include <algorithm>
+#include <cstdint>
 #include <sstream>
 
 namespace tide {
@@ -27,6 +29,10 @@ std::string Divergence::describe() const {
                 << 100.0f * kCollapsedCompression << " %): " << particleText() << " has density " << value << " kg/m3";
             break;
     }
+    if (unconvergedOfLast32 > 0)
+        out << "; before it, the pressure solve stopped short of its density tolerance in " << unconvergedOfLast32
+            << " of the last " << std::min<std::uint64_t>(step, 32) << " steps (solver.max_iterations " << maxIterations
+            << "): raise solver.max_iterations, shorten solver.max_dt, or (dfsph) keep solver.momentum on";
     return out.str();
 }
 

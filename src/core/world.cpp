@@ -1,6 +1,7 @@
 #include <tide/world.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -667,6 +668,8 @@ double World::Impl::step(double maxDt, Clock clockMode) {
         w.diffusion.apply(w.particles, w.neighbors, w.periodic, w.pairTables, w.h, static_cast<float>(dt), w.threads);
     w.stats.lastPressureIterations = ctx.pressureIterations;
     w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);
+    w.stats.unconvergedSolves += ctx.pressureConverged ? 0 : 1;
+    w.stats.recentUnconverged = (w.stats.recentUnconverged << 1) | (ctx.pressureConverged ? 0u : 1u);
     const float margin = w.solver->wallMargin() * w.def.particleSpacing;
     // Moving obstacles first: where one squeezes a particle against a wall, the wall wins.
     for (const Impl::Mover& m : w.movers)
@@ -698,6 +701,8 @@ double World::Impl::step(double maxDt, Clock clockMode) {
         diverged->step = w.stats.steps;
         diverged->time = w.time;
         diverged->dt = dt;
+        diverged->unconvergedOfLast32 = std::popcount(w.stats.recentUnconverged);
+        diverged->maxIterations = w.def.solver.maxIterations;
         w.divergence = diverged;
         throw DivergenceError(*diverged);
     }

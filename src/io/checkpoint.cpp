@@ -89,6 +89,8 @@ void putStats(Writer& w, const WorldStats& s) {
     w.put(s.emitterCapacityHits);
     w.put<std::int32_t>(s.lastPressureIterations);
     w.put(s.pressureIterationsSum);
+    w.put(s.unconvergedSolves);
+    w.put(s.recentUnconverged);
     w.put(s.dtMin);
     w.put(s.dtMax);
     w.put(s.dtSum);
@@ -100,7 +102,7 @@ void putStats(Writer& w, const WorldStats& s) {
         w.put(seconds);
 }
 
-WorldStats getStats(Reader& r) {
+WorldStats getStats(Reader& r, std::uint32_t version) {
     WorldStats s;
     s.steps = r.get<std::uint64_t>("stats");
     s.lastDt = r.get<double>("stats");
@@ -110,6 +112,10 @@ WorldStats getStats(Reader& r) {
     s.emitterCapacityHits = r.get<std::uint64_t>("stats");
     s.lastPressureIterations = r.get<std::int32_t>("stats");
     s.pressureIterationsSum = r.get<std::uint64_t>("stats");
+    if (version >= 3) {
+        s.unconvergedSolves = r.get<std::uint64_t>("stats");
+        s.recentUnconverged = r.get<std::uint32_t>("stats");
+    }
     s.dtMin = r.get<double>("stats");
     s.dtMax = r.get<double>("stats");
     s.dtSum = r.get<double>("stats");
@@ -169,9 +175,9 @@ Checkpoint decodeCheckpoint(std::string_view bytes, const std::string& source) {
         throw CheckpointError(source + ": not a tide checkpoint (no TIDECKPT header)");
     for (std::size_t k = 0; k < sizeof kMagic; ++k) header.get<char>("the header");
     const auto version = header.get<std::uint32_t>("the header");
-    if (version != kCheckpointVersion)
+    if (version < kOldestCheckpointVersion || version > kCheckpointVersion)
         throw CheckpointError(source + ": checkpoint format version " + std::to_string(version) + ", this tide reads " +
-                              std::to_string(kCheckpointVersion));
+                              std::to_string(kOldestCheckpointVersion) + " to " + std::to_string(kCheckpointVersion));
     if (header.get<std::uint32_t>("the header") != kByteOrder)
         throw CheckpointError(source + ": checkpoint written on a machine of another byte order");
     const auto size = header.get<std::uint64_t>("the header");
@@ -188,7 +194,7 @@ Checkpoint decodeCheckpoint(std::string_view bytes, const std::string& source) {
     s.time = r.get<double>("time");
     s.soundSpeed = r.get<float>("sound speed");
     s.stepsSinceReorder = r.get<std::int32_t>("reorder counter");
-    s.stats = getStats(r);
+    s.stats = getStats(r, version);
     ParticleStore& p = s.particles;
     const auto n = r.get<std::uint32_t>("particle count");
     p.setNextId(r.get<std::uint32_t>("next id"));

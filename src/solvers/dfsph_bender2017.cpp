@@ -332,6 +332,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
         });
         push();
     }
+    densityConverged_ = converged;
     return iteration;
 }
 
@@ -426,6 +427,7 @@ double DfsphBender2017::step(StepContext& ctx) {
         p.pressure[i] = p.density[i] * (meanKappa + p.warmDivergence[i] / dtf);  // p = ρκ: the equivalent SPH pressure
     });
     ctx.pressureIterations = divergenceIterations + densityIterations;
+    ctx.pressureConverged = densityConverged_;
     lastDt_ = dt;
     return dt;
 }

@@ -114,6 +114,7 @@ private:
     XsphFilter xsph_;
     std::vector<glm::vec3> savedVelocity_;  ///< before a step that may be retaken (density contrast)
     double dtCap_ = 1e30;              ///< s; halved when a density solve diverges (density contrast)
+    bool densityConverged_ = true;    ///< whether the last density solve reached its target
     bool densityDiverged_ = false;     ///< whether the last density solve diverged (density contrast)
     double lastDt_ = 1e-3;             ///< s; the divergence solve runs before this step's dt is known
 };

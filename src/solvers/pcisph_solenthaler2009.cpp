@@ -236,6 +236,7 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
     ctx.lap(Phase::NonPressureForces);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     ctx.pressureIterations = iterations;
+    ctx.pressureConverged = solve.converged;
     return dt;
 }
 

@@ -43,6 +43,9 @@ struct StepContext {
     int threads;
     double maxDt;            ///< the step may not be longer (e.g. to land on a frame time)
     int pressureIterations = 0;  ///< out: iterations the pressure solve took this step
+    /// out: false when the pressure solve stopped (at max_iterations, or diverging) short of
+    /// its density tolerance; explicit solvers leave it true.
+    bool pressureConverged = true;
     PhaseClock* clock = nullptr;  ///< where a solver books the phases of its step (may be null)
     const MaterialPairs* pairs = nullptr;  ///< per-pair diffusivity and surface tension (may be null: none)
     /// Fluid rows a solver keeps packed for the SIMD pair sums (solvers/pair_sums.hpp), current

@@ -24,8 +24,11 @@
 
 namespace tide::io {
 
-/// The format version written; files of another version are refused.
-inline constexpr std::uint32_t kCheckpointVersion = 2;  // 2: dye concentration per particle
+/// The format version written (2: dye concentration per particle; 3: the count of
+/// unconverged pressure solves in the stats); it reads back to kOldestCheckpointVersion and
+/// refuses the others.
+inline constexpr std::uint32_t kCheckpointVersion = 3;
+inline constexpr std::uint32_t kOldestCheckpointVersion = 2;
 
 /// A checkpoint that cannot be used; what() names the file and the problem.
 class CheckpointError : public std::runtime_error {
