@@ -7,7 +7,9 @@
 /// ρ_i = m_i Σ_j W_ij and the pressure in volume form, see density_contrast_solenthaler2008.hpp),
 ///   divergence-free solve:  κᵛ_i = (1/Δt) (Dρ_i/Dt) α_i,                         (eq. 15)
 ///   constant-density solve: κ_i = (ρ*_i − ρ0)/Δt² α_i,                            (eq. 12)
-///     with ρ*_i evaluated at the predicted positions rather than linearised (eq. 9),
+///     with ρ*_i evaluated at the predicted positions rather than linearised (eq. 9);
+///     a solve whose error doubles goes on with the linearised ρ*_i (deep water at a loose
+///     tolerance, where the former's Jacobi iteration is unstable),
 ///   each: v_i −= Δt Σ_j m_j (κ_i/ρ_i + κ_j/ρ_j) ∇W_ij                            (eq. 13)
 /// iterated until the mean density error is below SolverDef::maxDensityError. The density
 /// solve is a projected Jacobi iteration (κ ≥ 0, weight ½, may fall back after overshooting),
