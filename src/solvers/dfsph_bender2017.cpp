@@ -333,7 +333,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
             // the mean error grew from 0.38 % to 6 % within 75 iterations, worst particles
             // through the bulk, and the tank blew up at 0.075 s; docs/robustness.md). The
             // paper's prediction, linear in v (Bender & Koschier 2017, eq. 9), holds it: the
-            // rest of such a solve takes that. None of the shipped scenes' solves gets here.
+            // rest of such a solve takes that. No solve in the shipped scenes' first second gets here.
             linearised = true;
         }
         // Projected Jacobi with momentum: κ stays ≥ 0 (no tension at the free surface) but may
