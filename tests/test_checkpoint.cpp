@@ -188,6 +188,19 @@ TEST(Checkpoint, AStateThatDoesNotFitTheWorldChangesNothing) {
     EXPECT_THROW(other.restoreState(good), std::invalid_argument);
 }
 
+/// Steps until World::step throws DivergenceError (its what() is the report's describe()), at most `steps` times.
+std::optional<Divergence> stepUntilDivergence(World& world, int steps) {
+    for (int s = 0; s < steps; ++s) {
+        try {
+            world.step(1.0);
+        } catch (const DivergenceError& e) {
+            EXPECT_EQ(std::string(e.what()), e.divergence.describe());
+            return e.divergence;
+        }
+    }
+    return std::nullopt;
+}
+
 TEST(DivergenceGuard, AHugeForcedTimeStepStopsAtTheStepWithTheParticleAndQuantity) {
     WorldDef def;
     def.domainMax = {0.4f, 0.4f, 0.4f};
@@ -199,17 +212,10 @@ TEST(DivergenceGuard, AHugeForcedTimeStepStopsAtTheStepWithTheParticleAndQuantit
     World world(def);
     world.addMaterial(MaterialDef{});
     world.addBlock({{0.0f, 0.0f, 0.0f}, {0.2f, 0.2f, 0.4f}, {}, 0});
-    std::optional<Divergence> caught;
-    for (int s = 0; s < 50 && !caught; ++s) {
-        try {
-            world.step(1.0);
-        } catch (const DivergenceError& e) {
-            caught = e.divergence;
-            EXPECT_NE(std::string(e.what()).find("step " + std::to_string(e.divergence.step)), std::string::npos) << e.what();
-            EXPECT_NE(std::string(e.what()).find("particle "), std::string::npos) << e.what();
-        }
-    }
+    const std::optional<Divergence> caught = stepUntilDivergence(world, 50);
     ASSERT_TRUE(caught) << "a 0.05 s step of a 0.02 m wcsph fluid did not diverge in 50 steps";
+    EXPECT_NE(caught->describe().find("step " + std::to_string(caught->step)), std::string::npos) << caught->describe();
+    EXPECT_NE(caught->describe().find("particle "), std::string::npos) << caught->describe();
     EXPECT_EQ(caught->step, world.stats().steps);
     EXPECT_DOUBLE_EQ(caught->time, world.time());
     EXPECT_EQ(caught->dt, static_cast<double>(0.05f));
@@ -258,14 +264,7 @@ TEST(DivergenceGuard, PressureSolvesThatStopShortAreCountedAndNamedInADivergence
     // Forced 50 ms steps (≈10× the step limits) with the cap: the solves stop short, then it blows up.
     cappedDef.solver.minDt = cappedDef.solver.maxDt = 0.05f;
     World forced = scenarios::stillTank(cappedDef, 0.4f, 0.3f, 4);
-    std::optional<Divergence> caught;
-    for (int s = 0; s < 50 && !caught; ++s) {
-        try {
-            forced.step(1.0);
-        } catch (const DivergenceError& e) {
-            caught = e.divergence;
-        }
-    }
+    const std::optional<Divergence> caught = stepUntilDivergence(forced, 50);
     ASSERT_TRUE(caught) << "50 ms steps of 0.3 m of water at 2 cm did not diverge in 50 steps";
     const std::string text = caught->describe();
     std::printf("%s\n", text.c_str());
