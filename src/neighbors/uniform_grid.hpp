@@ -71,6 +71,16 @@ public:
         }
     }
 
+    /// Calls f(begin, end) for the runs of sortedParticles() of every cell that holds points of
+    /// the box [lo, hi] (clamped into the grid), one run per row of cells along x, in the order
+    /// of forEachNeighborRun (z, then y). Not periodic.
+    template <class F>
+    void forEachRunInBox(const glm::vec3& lo, const glm::vec3& hi, F&& f) const {
+        const glm::ivec3 a = cellOf(lo), b = cellOf(hi);
+        for (int z = a.z; z <= b.z; ++z)
+            for (int y = a.y; y <= b.y; ++y) f(cellStart_[cellIndex({a.x, y, z})], cellStart_[cellIndex({b.x, y, z}) + 1]);
+    }
+
 private:
     /// The distinct cell coordinates around c along one axis, ascending; returns how many (≤ 3).
     [[nodiscard]] int neighborCoordinates(int c, int axis, int out[3]) const {
