@@ -61,6 +61,9 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
         const pair_sums::Neighbors neighbors{indices.data(), codes.data(), count};
         double kernel = 0.0, kernelScale = 0.0, divergence = 0.0, divergenceScale = 0.0;
         glm::dvec3 gradient(0.0), gradientScale(0.0), viscous(0.0), viscousScale(0.0);
+        double squares = 0.0;
+        glm::dvec3 xsph(0.0), xsphScale(0.0);
+        const kernels::Poly6 poly6(w.h);
         const double epsilon = 0.01 * 0.25 * h * h;
         for (std::size_t k = 0; k < count; ++k) {
             const std::uint32_t j = candidates[k];
@@ -71,6 +74,7 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
             kernelScale += std::abs(value);
             gradient += wj * m * r;
             gradientScale += glm::abs(wj * m * r);
+            squares += glm::dot(wj * m * r, wj * m * r);
             const double rate = wj * m * glm::dot(glm::dvec3(vi - glm::vec3(cloud.velocities[j])), r);
             divergence += rate;
             divergenceScale += std::abs(rate);
@@ -80,12 +84,21 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
                                      glm::dvec3(vi - glm::vec3(cloud.velocities[j]));
             viscous += shear;
             viscousScale += glm::abs(shear);
+            const double reach = std::max(double{poly6.h2} - glm::dot(r, r), 0.0);
+            const glm::dvec3 smoothing = (2.0 * wj / (double{cloud.velocities[i].w} + cloud.velocities[j].w) * reach * reach * reach) *
+                                         glm::dvec3(glm::vec3(cloud.velocities[j]) - vi);
+            xsph += smoothing;
+            xsphScale += glm::abs(smoothing);
         }
         ASSERT_TRUE(count == 0 || gradientScale.x + gradientScale.y + gradientScale.z > 0.0);  // codes that count
         const glm::vec3 v = pair_sums::viscousSum(neighbors, cloud.points.data(), cloud.velocities.data(), xi, vi, w,
                                                   static_cast<float>(epsilon), box);
         for (int axis = 0; axis < 3; ++axis)
             EXPECT_NEAR(v[axis], viscous[axis], 1e-5 * viscousScale[axis] + 1e-12) << count << " neighbours";
+        const glm::vec3 x = pair_sums::xsphSum(neighbors, cloud.points.data(), cloud.velocities.data(), xi,
+                                               cloud.velocities[i], poly6, box);
+        for (int axis = 0; axis < 3; ++axis)
+            EXPECT_NEAR(x[axis], xsph[axis], 1e-5 * xsphScale[axis] + 1e-30) << count << " neighbours";
         for (const auto order : {pair_sums::Order::Lanes, pair_sums::Order::Sequential}) {
             const float initial = 0.25f;
             // The density pass writes each pair's code, bit for bit encode()'s, and nothing past the list.
@@ -103,6 +116,10 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
             const glm::vec3 g = pair_sums::gradientSum(neighbors, cloud.points.data(), xi, box, order);
             for (int axis = 0; axis < 3; ++axis)
                 EXPECT_NEAR(g[axis], gradient[axis], 1e-5 * gradientScale[axis] + 1e-12) << count << " neighbours";
+            const glm::vec4 gs = pair_sums::gradientAndSquaresSum(neighbors, cloud.points.data(), xi, box, order);
+            for (int axis = 0; axis < 3; ++axis)
+                EXPECT_NEAR(gs[axis], gradient[axis], 1e-5 * gradientScale[axis] + 1e-12) << count << " neighbours";
+            EXPECT_NEAR(gs.w, squares, 1e-5 * squares + 1e-12) << count << " neighbours";
             EXPECT_NEAR(pair_sums::divergenceSum(neighbors, cloud.points.data(), cloud.velocities.data(), xi, vi, box, order),
                         divergence, 1e-5 * divergenceScale + 1e-12)
                 << count << " neighbours";

@@ -85,6 +85,7 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
     fluidGradient_.resize(n);
     wallGradient_.resize(n);
     if (ctx.boundary.moving) wallVelocityRate_.resize(n);
+    const bool uniform = contrast_.uniform();
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         // Density contrast: ρ_i = m_i Σ_j W_ij, and j answers i's κ_i with Δv_j = Δt κ_i (m_i/m_j) (m_i/ρ_i) ∇W_ij,
@@ -93,17 +94,23 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
         const float mi = p.mass[i];
         glm::vec3 fluidGrad(0.0f), wallGrad(0.0f);
         float sumSquares = 0.0f;
-        const PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
-        for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 g = (mi * fluidF_.factor(*f++)) * ctx.delta(xi, p.position[j]);
-            fluidGrad += g;
-            // The exact factor is m_i/m_j; for a light i among heavy j it makes i's diagonal
-            // tiny next to the terms through its light neighbours, and the Jacobi iteration
-            // diverges (a 25:1 column drop went to NaN within 0.1 s, measured). Capping it
-            // below at 1 under-relaxes exactly those rows; one mass gives 1 either way.
-            sumSquares += std::max(mi / p.mass[j], 1.0f) * glm::dot(g, g);
+        if (uniform) {  // in SIMD lanes over the (x_j, m_j) rows: m_j = m_i
+            const glm::vec4 sums = pair_sums::gradientAndSquaresSum(fluidPairs(ctx, i), positionMass_.data(), xi, ctx.periodic);
+            fluidGrad = fluidF_.unit() * glm::vec3(sums);
+            sumSquares = fluidF_.unit() * fluidF_.unit() * sums.w;
+        } else {
+            const PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
+            for (const std::uint32_t j : ctx.neighbors.of(i)) {
+                const glm::vec3 g = (mi * fluidF_.factor(*f++)) * ctx.delta(xi, p.position[j]);
+                fluidGrad += g;
+                // The exact factor is m_i/m_j; for a light i among heavy j it makes i's diagonal
+                // tiny next to the terms through its light neighbours, and the Jacobi iteration
+                // diverges (a 25:1 column drop went to NaN within 0.1 s, measured). Capping it
+                // below at 1 under-relaxes exactly those rows; one mass gives 1 either way.
+                sumSquares += std::max(mi / p.mass[j], 1.0f) * glm::dot(g, g);
+            }
         }
-        f = wallF_.of(ctx.boundaryNeighbors, i).data();
+        const PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
         float wallRate = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 g = (ctx.boundary.volume[b] * wallF_.factor(*f++)) * ctx.delta(xi, ctx.boundary.position[b]);
@@ -400,7 +407,7 @@ double DfsphBender2017::step(StepContext& ctx) {
     // step it needs as many, measured in a Rayleigh–Taylor box.) Measured: a 5:1 column drop in a thin box (two layers
     // between walls) ran into a diverging solve at 0.1 s without it. One rest density: one try.
     if (!contrast_.uniform()) savedVelocity_ = p.velocity;
-    double dt = 0.0;
+    double dt = 0.0, driftTime = 0.0;
     int densityIterations = 0;
     for (;;) {
         SolverDef capped = limits, cappedDrift = driftLimits;
@@ -411,8 +418,7 @@ double DfsphBender2017::step(StepContext& ctx) {
         dt = cflTimeStep(capped, ctx.particleSpacing, speed, ctx.maxDt);
         // Not landed on the frame: a frame's last step would otherwise remove all the compression
         // kept (at 1 ms max_dt the pressure written at frame ends read 1.22 ρgd, 1.0 between).
-        const double driftTime =
-            std::max(dt, cflTimeStep(cappedDrift, ctx.particleSpacing, speed, std::numeric_limits<double>::infinity()));
+        driftTime = std::max(dt, cflTimeStep(cappedDrift, ctx.particleSpacing, speed, std::numeric_limits<double>::infinity()));
         const auto dtTry = static_cast<float>(dt);
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             p.velocity[i] += dtTry * p.acceleration[i];
@@ -420,8 +426,10 @@ double DfsphBender2017::step(StepContext& ctx) {
         // XSPH is a non-pressure force too: smoothing after the density solve would undo part of it.
         ctx.lap(Phase::Integration);
         // positionK_ is free until the density solve predicts positions into it.
+        // One rest density: in SIMD lanes over the (x_j, m_j) rows (the scalar order otherwise, as pairOrder).
         xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
-                    ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads, positionK_);
+                    ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads, positionK_,
+                    contrast_.uniform() ? positionMass_.data() : nullptr);
         ctx.lap(Phase::NonPressureForces);
         densityIterations += solveDensity(ctx, dtTry, static_cast<float>(driftTime));
         ctx.lap(Phase::PressureSolve);
@@ -436,13 +444,21 @@ double DfsphBender2017::step(StepContext& ctx) {
     // at the bottom of the 0.3 m tank at rest at 2 cm) about an average that holds the water
     // up, and output written every few steps sampled the zigzag's same side (a probe read
     // 1.25 ρgd with 4.4 ms steps and 25 ms frames; the two-step average 0.97–1.05).
+    // Steps shorter than the drift time (a short max_dt, the free-fall limit) share out the
+    // compression they remove over several steps, and κ then cycles over as many: in the
+    // 0.24 m tank at rest with 1 ms steps (drift time 5 ms) the pressure written every 25th
+    // step read 0.91 ρgd at every depth while its mean over all steps was 1.00. There the
+    // pressure reported is a running mean over the drift time (weight Δt/drift time: 0.2), so
+    // frames read it wherever they fall in the cycle; steps of the drift time report their own.
     const float lastWeight = static_cast<float>(lastDt_ / (lastDt_ + dt)), weight = 1.0f - lastWeight;
+    const float smoothing = static_cast<float>(std::min(1.0, dt / driftTime));
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         p.position[i] += dtf * p.velocity[i];
         const float meanKappa = weight * kappa_[i] + lastWeight * p.warmKappa[i];
         p.warmKappa[i] = kappa_[i];
         // The divergence solve's velocity change (its κᵛ·Δt summed in warmDivergence) acts over this step.
-        p.pressure[i] = p.density[i] * (meanKappa + p.warmDivergence[i] / dtf);  // p = ρκ: the equivalent SPH pressure
+        const float pressure = p.density[i] * (meanKappa + p.warmDivergence[i] / dtf);  // p = ρκ: the equivalent SPH pressure
+        p.pressure[i] = smoothing < 1.0f ? p.pressure[i] + smoothing * (pressure - p.pressure[i]) : pressure;
     });
     ctx.pressureIterations = divergenceIterations + densityIterations;
     ctx.pressureConverged = densityConverged_;

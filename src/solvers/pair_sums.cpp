@@ -2,6 +2,7 @@
 // foreach_target (this file includes itself once per target) and dispatched at run time.
 #include "solvers/pair_sums.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -66,6 +67,21 @@ glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const
 }
 
 template <bool Periodic>
+glm::vec4 gradientAndSquaresSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                const PeriodicBox& box) {
+    float x = 0.0f, y = 0.0f, z = 0.0f, squares = 0.0f;
+    for (std::size_t k = 0; k < neighbors.count; ++k) {
+        const glm::vec4 xj = points[neighbors.index[k]];
+        const glm::vec3 g = (xj.w * PairKernels::magnitude(neighbors.code[k])) * delta<Periodic>(xi, xj, box);
+        x += g.x;
+        y += g.y;
+        z += g.z;
+        squares += g.x * g.x + g.y * g.y + g.z * g.z;
+    }
+    return {x, y, z, squares};
+}
+
+template <bool Periodic>
 float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     float sum = 0.0f;
@@ -87,6 +103,20 @@ glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const 
         const glm::vec3 d = delta<Periodic>(xi, points[j], box);
         const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
         sum += (points[j].w * velocities[j].w * r * w.derivative(r) / (r * r + epsilon)) * (vi - glm::vec3(velocities[j]));
+    }
+    return sum;
+}
+
+template <bool Periodic>
+glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
+                  const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
+    glm::vec3 sum(0.0f);
+    for (std::size_t k = 0; k < neighbors.count; ++k) {
+        const std::uint32_t j = neighbors.index[k];
+        const glm::vec3 d = delta<Periodic>(xi, points[j], box);
+        const float reach = std::max(w.h2 - (d.x * d.x + d.y * d.y + d.z * d.z), 0.0f);
+        sum += (2.0f * points[j].w / (vi.w + velocities[j].w) * reach * reach * reach) *
+               (glm::vec3(velocities[j]) - glm::vec3(vi));
     }
     return sum;
 }
@@ -134,6 +164,16 @@ template <bool Periodic>
 float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                      const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     return sequential::divergenceSum<Periodic>(neighbors, points, velocities, xi, vi, box);
+}
+template <bool Periodic>
+glm::vec4 GradientAndSquaresSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                 const PeriodicBox& box) {
+    return sequential::gradientAndSquaresSum<Periodic>(neighbors, points, xi, box);
+}
+template <bool Periodic>
+glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
+                   const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
+    return sequential::xsphSum<Periodic>(neighbors, points, velocities, xi, vi, w, box);
 }
 
 #else
@@ -308,6 +348,26 @@ glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, cons
 }
 
 template <bool Periodic>
+glm::vec4 GradientAndSquaresSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                 const PeriodicBox& box) {
+    const D d;
+    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
+    V sx = hn::Zero(d), sy = hn::Zero(d), sz = hn::Zero(d), squares = hn::Zero(d);
+    for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
+        const Columns j = LoadRows(points, neighbors, k);
+        const V s = hn::Mul(j.w, LoadMagnitudes(neighbors, k));
+        const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
+        const V gx = hn::Mul(s, r.x), gy = hn::Mul(s, r.y), gz = hn::Mul(s, r.z);
+        sx = hn::Add(sx, gx);
+        sy = hn::Add(sy, gy);
+        sz = hn::Add(sz, gz);
+        squares = hn::MulAdd(gx, gx, hn::MulAdd(gy, gy, hn::MulAdd(gz, gz, squares)));
+    }
+    return {hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)), hn::GetLane(hn::SumOfLanes(d, sz)),
+            hn::GetLane(hn::SumOfLanes(d, squares))};
+}
+
+template <bool Periodic>
 float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                      const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     const D d;
@@ -354,6 +414,29 @@ glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const
                              hn::GetLane(hn::SumOfLanes(d, sz)));
 }
 
+template <bool Periodic>
+glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
+                   const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
+    const D d;
+    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
+    const V vx = hn::Set(d, vi.x), vy = hn::Set(d, vi.y), vz = hn::Set(d, vi.z), ui = hn::Set(d, vi.w);
+    const V h2 = hn::Set(d, w.h2), two = hn::Set(d, 2.0f), zero = hn::Zero(d);
+    V sx = zero, sy = zero, sz = zero;
+    for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
+        const Columns j = LoadRows(points, neighbors, k);
+        const Columns v = LoadRows(velocities, neighbors, k);
+        const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
+        const V reach = hn::Max(hn::Sub(h2, hn::MulAdd(r.x, r.x, hn::MulAdd(r.y, r.y, hn::Mul(r.z, r.z)))), zero);
+        // masked last: the lanes past the list's end may divide by anything
+        const V s = hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k),
+                                       hn::Mul(hn::Div(hn::Mul(two, j.w), hn::Add(ui, v.w)), hn::Mul(reach, hn::Mul(reach, reach))));
+        sx = hn::MulAdd(s, hn::Sub(v.x, vx), sx);
+        sy = hn::MulAdd(s, hn::Sub(v.y, vy), sy);
+        sz = hn::MulAdd(s, hn::Sub(v.z, vz), sz);
+    }
+    return {hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)), hn::GetLane(hn::SumOfLanes(d, sz))};
+}
+
 #endif  // HWY_TARGET == HWY_SCALAR
 
 float KernelSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
@@ -371,6 +454,11 @@ glm::vec3 GradientSumImpl(const Neighbors& neighbors, const glm::vec4* points, c
                           const PeriodicBox& box) {
     return box.any ? GradientSumT<true>(neighbors, points, xi, box) : GradientSumT<false>(neighbors, points, xi, box);
 }
+glm::vec4 GradientAndSquaresSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                    const PeriodicBox& box) {
+    return box.any ? GradientAndSquaresSumT<true>(neighbors, points, xi, box)
+                   : GradientAndSquaresSumT<false>(neighbors, points, xi, box);
+}
 float DivergenceSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                         const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     return box.any ? DivergenceSumT<true>(neighbors, points, velocities, xi, vi, box)
@@ -381,6 +469,11 @@ glm::vec3 ViscousSumImpl(const Neighbors& neighbors, const glm::vec4* points, co
                          const PeriodicBox& box) {
     return box.any ? ViscousSumT<true>(neighbors, points, velocities, xi, vi, w, epsilon, box)
                    : ViscousSumT<false>(neighbors, points, velocities, xi, vi, w, epsilon, box);
+}
+glm::vec3 XsphSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                      const glm::vec3& xi, const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
+    return box.any ? XsphSumT<true>(neighbors, points, velocities, xi, vi, w, box)
+                   : XsphSumT<false>(neighbors, points, velocities, xi, vi, w, box);
 }
 const char* InstructionSetImpl() { return hwy::TargetName(HWY_TARGET); }
 
@@ -394,8 +487,10 @@ namespace tide::pair_sums {
 HWY_EXPORT(KernelSumImpl);
 HWY_EXPORT(KernelSumAndCodesImpl);
 HWY_EXPORT(GradientSumImpl);
+HWY_EXPORT(GradientAndSquaresSumImpl);
 HWY_EXPORT(DivergenceSumImpl);
 HWY_EXPORT(ViscousSumImpl);
+HWY_EXPORT(XsphSumImpl);
 HWY_EXPORT(InstructionSetImpl);
 
 float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
@@ -420,6 +515,13 @@ glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const
                        : sequential::gradientSum<false>(neighbors, points, xi, box);
     return HWY_DYNAMIC_DISPATCH(GradientSumImpl)(neighbors, points, xi, box);
 }
+glm::vec4 gradientAndSquaresSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                const PeriodicBox& box, Order order) {
+    if (order == Order::Sequential)
+        return box.any ? sequential::gradientAndSquaresSum<true>(neighbors, points, xi, box)
+                       : sequential::gradientAndSquaresSum<false>(neighbors, points, xi, box);
+    return HWY_DYNAMIC_DISPATCH(GradientAndSquaresSumImpl)(neighbors, points, xi, box);
+}
 float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box, Order order) {
     if (order == Order::Sequential)
@@ -431,6 +533,10 @@ glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const 
                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
                      const PeriodicBox& box) {
     return HWY_DYNAMIC_DISPATCH(ViscousSumImpl)(neighbors, points, velocities, xi, vi, w, epsilon, box);
+}
+glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
+                  const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
+    return HWY_DYNAMIC_DISPATCH(XsphSumImpl)(neighbors, points, velocities, xi, vi, w, box);
 }
 const char* instructionSet() { return HWY_DYNAMIC_DISPATCH(InstructionSetImpl)(); }
 

@@ -57,6 +57,11 @@ float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, con
 glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                       const PeriodicBox& box, Order order = Order::Lanes);
 
+/// (Σ_j g_ij, Σ_j |g_ij|²) with g_ij = w_j m_ij (x_i − x_j), m_ij as above: the two sums of
+/// DFSPH's factor α_i (Bender & Koschier 2017, eq. 11) in units of PairKernels::unit().
+glm::vec4 gradientAndSquaresSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                const PeriodicBox& box, Order order = Order::Lanes);
+
 /// Σ_j w_j m_ij (v_i − v_j)·(x_i − x_j), with m_ij as above and (v_j, ·) = velocities[j].
 float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box, Order order = Order::Lanes);
@@ -67,6 +72,12 @@ float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const g
 glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
                      const PeriodicBox& box);
+
+/// Σ_j (2 w_j/(u_i + u_j)) (h² − r²)₊³ (v_j − v_i), r = |x_i − x_j|, with (x_j, w_j) = points[j]
+/// and (v_j, u_j) = velocities[j]: XSPH's sum (Monaghan 1989) with w = m and u = ρ, over the
+/// poly6 kernel `w` less its normalisation (xsph_monaghan1989.hpp).
+glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
+                  const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box);
 
 /// The instruction set the sums run on here (e.g. "AVX2"), for reports.
 const char* instructionSet();
