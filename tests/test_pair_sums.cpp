@@ -95,6 +95,21 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
                                                   static_cast<float>(epsilon), box);
         for (int axis = 0; axis < 3; ++axis)
             EXPECT_NEAR(v[axis], viscous[axis], 1e-5 * viscousScale[axis] + 1e-12) << count << " neighbours";
+        glm::dvec3 plain(0.0), weighted(0.0), plainScale(0.0), weightedScale(0.0);
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::uint32_t j = candidates[k];
+            const glm::vec3 r = box.delta(xi, glm::vec3(cloud.points[j]));
+            const glm::dvec3 g(w.gradient(r, glm::length(r)));
+            plain += g;
+            plainScale += glm::abs(g);
+            weighted += double{cloud.points[j].w} * g;
+            weightedScale += glm::abs(double{cloud.points[j].w} * g);
+        }
+        const pair_sums::GradientSums gradients = pair_sums::kernelGradientSums(neighbors, cloud.points.data(), xi, w, box);
+        for (int axis = 0; axis < 3; ++axis) {
+            EXPECT_NEAR(gradients.plain[axis], plain[axis], 1e-5 * plainScale[axis] + 1e-12) << count << " neighbours";
+            EXPECT_NEAR(gradients.weighted[axis], weighted[axis], 1e-5 * weightedScale[axis] + 1e-12) << count << " neighbours";
+        }
         const glm::vec3 x = pair_sums::xsphSum(neighbors, cloud.points.data(), cloud.velocities.data(), xi,
                                                cloud.velocities[i], poly6, box);
         for (int axis = 0; axis < 3; ++axis)

@@ -121,6 +121,20 @@ glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm
     return sum;
 }
 
+template <bool Periodic>
+GradientSums kernelGradientSums(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                const kernels::CubicSpline& w, const PeriodicBox& box) {
+    GradientSums sums;
+    for (std::size_t k = 0; k < neighbors.count; ++k) {
+        const glm::vec4 xj = points[neighbors.index[k]];
+        const glm::vec3 r = delta<Periodic>(xi, xj, box);
+        const glm::vec3 g = w.gradient(r, std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
+        sums.plain += g;
+        sums.weighted += xj.w * g;
+    }
+    return sums;
+}
+
 }  // namespace tide::pair_sums::sequential
 #endif  // TIDE_PAIR_SUMS_SEQUENTIAL
 
@@ -174,6 +188,11 @@ template <bool Periodic>
 glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
                    const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
     return sequential::xsphSum<Periodic>(neighbors, points, velocities, xi, vi, w, box);
+}
+template <bool Periodic>
+GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                 const kernels::CubicSpline& w, const PeriodicBox& box) {
+    return sequential::kernelGradientSums<Periodic>(neighbors, points, xi, w, box);
 }
 
 #else
@@ -437,6 +456,36 @@ glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const gl
     return {hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)), hn::GetLane(hn::SumOfLanes(d, sz))};
 }
 
+template <bool Periodic>
+GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                 const kernels::CubicSpline& w, const PeriodicBox& box) {
+    const D d;
+    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z), invH = hn::Set(d, w.invH);
+    const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), c24 = hn::Set(d, 24.0f), c6 = hn::Set(d, 6.0f);
+    V px = zero, py = zero, pz = zero, wx = zero, wy = zero, wz = zero;
+    for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
+        const Columns j = LoadRows(points, neighbors, k);
+        const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
+        const V length = hn::Sqrt(hn::MulAdd(r.x, r.x, hn::MulAdd(r.y, r.y, hn::Mul(r.z, r.z))));
+        // W'(r)/r h/σ = (24(½ − q)₊² − 6(1 − q)₊²)/r, the σ/h outside the sums; 0 at r = 0 and past the list
+        const V q = hn::Mul(length, invH);
+        const V outer = hn::Max(hn::Sub(one, q), zero), inner = hn::Max(hn::Sub(half, q), zero);
+        const V derivative = hn::Sub(hn::Mul(c24, hn::Mul(inner, inner)), hn::Mul(c6, hn::Mul(outer, outer)));
+        const auto counted = hn::And(hn::FirstN(d, neighbors.count - k), hn::Gt(length, zero));
+        const V f = hn::IfThenElseZero(counted, hn::Div(derivative, length));
+        px = hn::MulAdd(f, r.x, px);
+        py = hn::MulAdd(f, r.y, py);
+        pz = hn::MulAdd(f, r.z, pz);
+        const V fw = hn::Mul(f, j.w);
+        wx = hn::MulAdd(fw, r.x, wx);
+        wy = hn::MulAdd(fw, r.y, wy);
+        wz = hn::MulAdd(fw, r.z, wz);
+    }
+    const float scale = w.sigma * w.invH;
+    auto total = [&](V v) HWY_ATTR { return scale * hn::GetLane(hn::SumOfLanes(d, v)); };
+    return {{total(px), total(py), total(pz)}, {total(wx), total(wy), total(wz)}};
+}
+
 #endif  // HWY_TARGET == HWY_SCALAR
 
 float KernelSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
@@ -475,6 +524,11 @@ glm::vec3 XsphSumImpl(const Neighbors& neighbors, const glm::vec4* points, const
     return box.any ? XsphSumT<true>(neighbors, points, velocities, xi, vi, w, box)
                    : XsphSumT<false>(neighbors, points, velocities, xi, vi, w, box);
 }
+GradientSums KernelGradientSumsImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                    const kernels::CubicSpline& w, const PeriodicBox& box) {
+    return box.any ? KernelGradientSumsT<true>(neighbors, points, xi, w, box)
+                   : KernelGradientSumsT<false>(neighbors, points, xi, w, box);
+}
 const char* InstructionSetImpl() { return hwy::TargetName(HWY_TARGET); }
 
 }  // namespace HWY_NAMESPACE
@@ -491,6 +545,7 @@ HWY_EXPORT(GradientAndSquaresSumImpl);
 HWY_EXPORT(DivergenceSumImpl);
 HWY_EXPORT(ViscousSumImpl);
 HWY_EXPORT(XsphSumImpl);
+HWY_EXPORT(KernelGradientSumsImpl);
 HWY_EXPORT(InstructionSetImpl);
 
 namespace {
@@ -506,13 +561,14 @@ struct Targets {
     decltype(&HWY_STATIC_DISPATCH(DivergenceSumImpl)) divergenceSum;
     decltype(&HWY_STATIC_DISPATCH(ViscousSumImpl)) viscousSum;
     decltype(&HWY_STATIC_DISPATCH(XsphSumImpl)) xsphSum;
+    decltype(&HWY_STATIC_DISPATCH(KernelGradientSumsImpl)) kernelGradientSums;
 };
 Targets chooseTargets() {
     (void)HWY_DYNAMIC_DISPATCH(InstructionSetImpl)();  // a first dispatch chooses the target
     return Targets{&HWY_DYNAMIC_DISPATCH(KernelSumImpl),     &HWY_DYNAMIC_DISPATCH(KernelSumAndCodesImpl),
                    &HWY_DYNAMIC_DISPATCH(GradientSumImpl),   &HWY_DYNAMIC_DISPATCH(GradientAndSquaresSumImpl),
                    &HWY_DYNAMIC_DISPATCH(DivergenceSumImpl), &HWY_DYNAMIC_DISPATCH(ViscousSumImpl),
-                   &HWY_DYNAMIC_DISPATCH(XsphSumImpl)};
+                   &HWY_DYNAMIC_DISPATCH(XsphSumImpl),       &HWY_DYNAMIC_DISPATCH(KernelGradientSumsImpl)};
 }
 // Chosen when the program loads (no sums run before main), so a call reads a plain global.
 const Targets kTargets = chooseTargets();
@@ -563,6 +619,10 @@ glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const 
 glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
                   const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
     return targets().xsphSum(neighbors, points, velocities, xi, vi, w, box);
+}
+GradientSums kernelGradientSums(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                const kernels::CubicSpline& w, const PeriodicBox& box) {
+    return targets().kernelGradientSums(neighbors, points, xi, w, box);
 }
 const char* instructionSet() { return HWY_DYNAMIC_DISPATCH(InstructionSetImpl)(); }
 

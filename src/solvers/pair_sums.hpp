@@ -79,6 +79,15 @@ glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const 
 glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
                   const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box);
 
+/// Two kernel-gradient sums of one pass: Σ_j ∇W_ij and Σ_j w_j ∇W_ij of the cubic spline `w`,
+/// with (x_j, w_j) = points[j] and ∇W_ij = W'(r)/r (x_i − x_j): the pressure force of
+/// weakly compressible SPH, (p_i/ρ_i²) m Σ_j ∇W_ij + Σ_j (m p_j/ρ_j²) ∇W_ij for one mass m.
+struct GradientSums {
+    glm::vec3 plain{0.0f}, weighted{0.0f};
+};
+GradientSums kernelGradientSums(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                const kernels::CubicSpline& w, const PeriodicBox& box);
+
 /// The instruction set the sums run on here (e.g. "AVX2"), for reports.
 const char* instructionSet();
 

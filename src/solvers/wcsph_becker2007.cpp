@@ -5,6 +5,7 @@
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
 #include "solvers/equation_of_state.hpp"
+#include "solvers/pair_sums.hpp"
 #include "solvers/sph_sums.hpp"
 #include "solvers/time_step.hpp"
 
@@ -18,14 +19,31 @@ double WcsphBecker2007::step(StepContext& ctx) {
         p.pressure[i] = pressureFromDensity(EquationOfState::Tait, p.density[i], ctx.materials[p.material[i]].restDensity,
                                             ctx.soundSpeed, true);
     });
+    contrast_.prepare(p, ctx.materials, ctx.threads);
+    // One rest density: rows (x_j, m_j) and (v_j, 1/ρ_j) for the SIMD pair sums of the
+    // viscosity, then (x_j, m_j p_j/ρ_j²) for the pressure force's, as dfsph packs them.
+    const bool lanes = contrast_.uniform();
+    if (lanes) {
+        positionMass_.resize(n);
+        rows_.resize(n);
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+            positionMass_[i] = glm::vec4(p.position[i], p.mass[i]);
+            rows_[i] = glm::vec4(p.velocity[i], 1.0f / p.density[i]);
+        });
+        ctx.positionMassRows = positionMass_.data();
+        ctx.velocityRows = rows_.data();
+    }
     ctx.lap(Phase::Density);
     // Tension's force limit is in stableTimeStep's criterion on the total acceleration.
     sph::addNonPressureForces(ctx, accel_);
+    ctx.positionMassRows = ctx.velocityRows = nullptr;
     ctx.lap(Phase::NonPressureForces);
     // Walls take the pressure of the fluid around them, extrapolated hydrostatically.
     kappa_.resize(n);
-    parallelFor(n, ctx.threads, [&](std::uint32_t i) { kappa_[i] = p.pressure[i] / p.density[i]; });
-    contrast_.prepare(p, ctx.materials, ctx.threads);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        kappa_[i] = p.pressure[i] / p.density[i];
+        if (lanes) rows_[i] = glm::vec4(p.position[i], p.mass[i] * kappa_[i] / p.density[i]);
+    });
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity,
                   ctx.supportRadius, ctx.threads, contrast_.scale());
     wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa_, scaledKappa_, ctx.threads), ctx.threads);
@@ -38,10 +56,17 @@ double WcsphBecker2007::step(StepContext& ctx) {
         const float mi = p.mass[i];
         const float pi = mi * p.pressure[i] / (p.density[i] * p.density[i]);
         glm::vec3 sum(0.0f);
-        for (const std::uint32_t j : ctx.neighbors.of(i)) {
-            const glm::vec3 rij = ctx.delta(xi, p.position[j]);
-            const float vj = p.mass[j] / p.density[j];
-            sum += (pi + p.pressure[j] * vj * vj / mi) * w.gradient(rij, glm::length(rij));
+        const auto neighbors = ctx.neighbors.of(i);
+        if (lanes) {  // pi Σ_j ∇W_ij + Σ_j (m p_j/ρ_j²) ∇W_ij
+            const pair_sums::GradientSums sums =
+                pair_sums::kernelGradientSums({neighbors.data(), nullptr, neighbors.size()}, rows_.data(), xi, w, ctx.periodic);
+            sum = pi * sums.plain + sums.weighted;
+        } else {
+            for (const std::uint32_t j : neighbors) {
+                const glm::vec3 rij = ctx.delta(xi, p.position[j]);
+                const float vj = p.mass[j] / p.density[j];
+                sum += (pi + p.pressure[j] * vj * vj / mi) * w.gradient(rij, glm::length(rij));
+            }
         }
         // Ψ_b (p_i/ρ_i² + p_b/ρ_b²) with ρ_b = ρ_i (Akinci et al. 2012, Adami et al. 2012); the
         // wall's κ̃_b is p_b/ρ0_ref, read as κ_b = κ̃_b ρ0_ref/ρ0_i for fluid i.
@@ -63,8 +88,9 @@ double WcsphBecker2007::step(StepContext& ctx) {
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
     ctx.lap(Phase::Integration);
-    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
-                ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads);
+    // rows_ is free now: XSPH packs its (v_j, ρ_j) rows there.
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f,
+                ctx.threads, rows_, lanes ? positionMass_.data() : nullptr);
     ctx.lap(Phase::NonPressureForces);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });
     return dt;

@@ -14,6 +14,8 @@
 
 #include <vector>
 
+#include <glm/vec4.hpp>
+
 #include "boundary/wall_pressure_adami2012.hpp"
 #include "solvers/density_contrast_solenthaler2008.hpp"
 #include "solvers/solver.hpp"
@@ -34,6 +36,10 @@ private:
     DensityContrast contrast_;
     std::vector<float> scaledKappa_;  ///< κ ρ0_i/ρ0_ref for the wall pressure (several rest densities)
     XsphFilter xsph_;
+    std::vector<glm::vec4> positionMass_;  ///< (x_j, m_j), one rest density
+    /// (v_j, 1/ρ_j) for the viscosity, then (x_j, m_j p_j/ρ_j²) for the pressure force, then
+    /// XSPH's (v_j, ρ_j): one array for three (one rest density)
+    std::vector<glm::vec4> rows_;
 };
 
 }  // namespace tide
