@@ -12,6 +12,7 @@
 
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
+#include "solvers/pair_sums.hpp"
 #include "solvers/solver.hpp"
 #include "solvers/surface_tension_akinci2013.hpp"
 #include "solvers/viscosity.hpp"
@@ -30,15 +31,24 @@ inline constexpr float kBoundaryPressureMirror = 2.0f;
 /// ρ_i = m_i Σ_j W_ij + ρ0_i Σ_b V_b W_ib, cubic spline: the number density of Solenthaler &
 /// Pajarola 2008 (eq. 4–5; plain Σ_j m_j W_ij for one rest density, see
 /// density_contrast_solenthaler2008.hpp) with the walls of Akinci et al. 2012 (eq. 4).
-inline void computeDensities(StepContext& ctx) {
+/// With `positionMass`, rows (x_j, m_j) of one rest density, the fluid sum Σ_j m_j W_ij runs in
+/// SIMD lanes (pair_sums::kernelSum).
+inline void computeDensities(StepContext& ctx, const glm::vec4* positionMass = nullptr) {
     ParticleStore& p = ctx.particles;
     const kernels::CubicSpline w(ctx.supportRadius);
     const float self = w.value(0.0f);
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
-        float number = self;
-        for (const std::uint32_t j : ctx.neighbors.of(i)) number += w.value(glm::length(ctx.delta(xi, p.position[j])));
-        const float rho = p.mass[i] * number;
+        float rho = 0.0f;
+        const auto neighbors = ctx.neighbors.of(i);
+        if (positionMass != nullptr) {
+            rho = pair_sums::kernelSum({neighbors.data(), nullptr, neighbors.size()}, positionMass, xi, w, ctx.periodic,
+                                       p.mass[i] * self);
+        } else {
+            float number = self;
+            for (const std::uint32_t j : neighbors) number += w.value(glm::length(ctx.delta(xi, p.position[j])));
+            rho = p.mass[i] * number;
+        }
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
             boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, ctx.boundary.position[b])));

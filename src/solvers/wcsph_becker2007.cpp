@@ -14,22 +14,23 @@ namespace tide {
 double WcsphBecker2007::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
-    sph::computeDensities(ctx);
-    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-        p.pressure[i] = pressureFromDensity(EquationOfState::Tait, p.density[i], ctx.materials[p.material[i]].restDensity,
-                                            ctx.soundSpeed, true);
-    });
+    // One rest density: rows (x_j, m_j) for the SIMD pair sums of the densities, then
+    // (v_j, 1/ρ_j) for the viscosity's and (x_j, m_j p_j/ρ_j²) for the pressure force's, as
+    // dfsph packs them.
     contrast_.prepare(p, ctx.materials, ctx.threads);
-    // One rest density: rows (x_j, m_j) and (v_j, 1/ρ_j) for the SIMD pair sums of the
-    // viscosity, then (x_j, m_j p_j/ρ_j²) for the pressure force's, as dfsph packs them.
     const bool lanes = contrast_.uniform();
     if (lanes) {
         positionMass_.resize(n);
         rows_.resize(n);
-        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            positionMass_[i] = glm::vec4(p.position[i], p.mass[i]);
-            rows_[i] = glm::vec4(p.velocity[i], 1.0f / p.density[i]);
-        });
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) { positionMass_[i] = glm::vec4(p.position[i], p.mass[i]); });
+    }
+    sph::computeDensities(ctx, lanes ? positionMass_.data() : nullptr);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        p.pressure[i] = pressureFromDensity(EquationOfState::Tait, p.density[i], ctx.materials[p.material[i]].restDensity,
+                                            ctx.soundSpeed, true);
+        if (lanes) rows_[i] = glm::vec4(p.velocity[i], 1.0f / p.density[i]);
+    });
+    if (lanes) {
         ctx.positionMassRows = positionMass_.data();
         ctx.velocityRows = rows_.data();
     }
