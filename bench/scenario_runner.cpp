@@ -185,10 +185,14 @@ int main(int argc, char** argv) {
     if (one >= 0) return runOne(kScenarios.at(static_cast<std::size_t>(one)), seconds, threads);
 
     if (csv.empty()) csv = std::string(TIDE_SOURCE_DIR) + "/bench/results/" + cpuModel() + ".csv";
-    // The checkout's commit, "-dirty" when its tracked files differ from it (the binary may hold
-    // work not committed yet; a binary built from another tree is not detectable here).
-    const std::string revision = shellOutput("git -C " + std::string(TIDE_SOURCE_DIR) +
-                                             " describe --always --dirty --abbrev=7 --exclude '*' 2>/dev/null");
+    // The checkout's commit, "-dirty" when its tracked files other than the results differ from
+    // it (the binary may hold work not committed yet; a binary built from another tree is not
+    // detectable here). The rows this runner appends to bench/results/ do not make it dirty.
+    const std::string git = "git -C " + std::string(TIDE_SOURCE_DIR);
+    const std::string head = shellOutput(git + " rev-parse --short=7 HEAD 2>/dev/null");
+    const std::string revision =
+        head.empty() ? "unknown"
+                     : head + shellOutput(git + " diff --quiet HEAD -- . ':(exclude)bench/results' 2>/dev/null || echo -dirty");
     const bool fresh = !fs::exists(csv);
     fs::create_directories(fs::path(csv).parent_path());
     std::ofstream out(csv, std::ios::app);

@@ -125,6 +125,13 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
                 << count << " neighbours";
             for (std::size_t k = 0; k < written.size(); ++k)
                 EXPECT_EQ(written[k], k < count ? codes[k] : untouched) << k << " of " << count << " neighbours";
+            // α's sums from the same pass: bit for bit those of gradientAndSquaresSum over the codes.
+            glm::vec4 fused(-1.0f);
+            std::vector<PairKernels::Code> again(codes.size(), untouched);
+            pair_sums::kernelSumAndCodes(neighbors, cloud.points.data(), xi, w, box, initial, factors, again.data(), order, &fused);
+            EXPECT_EQ(again, written);
+            const glm::vec4 separate = pair_sums::gradientAndSquaresSum(neighbors, cloud.points.data(), xi, box, order);
+            for (int c = 0; c < 4; ++c) EXPECT_EQ(fused[c], separate[c]) << c << ", " << count << " neighbours";
             EXPECT_NEAR(pair_sums::kernelSum(neighbors, cloud.points.data(), xi, w, box, initial, order), initial + kernel,
                         1e-5 * (kernelScale + initial))
                 << count << " neighbours";

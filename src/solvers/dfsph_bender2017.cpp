@@ -56,14 +56,23 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     });
     fluidF_.resize(ctx.neighbors, w);
     wallF_.resize(ctx.boundaryNeighbors, w);
+    alpha_.resize(n);
+    fluidGradient_.resize(n);
     const float self = w.value(0.0f);
     withPairVector(ctx.periodic, [&](auto delta) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
             // m_i δ_i: Σ_j m_j W_ij, or δ_i = Σ_j W_ij times m_i below
+            // One rest density: α's fluid sums from the same pass (computeAlpha), kept meanwhile
+            // in fluidGradient_ and alpha_.
+            glm::vec4 sums(0.0f);
             float rho = pair_sums::kernelSumAndCodes(fluidPairs(ctx, i), positionMass_.data(), xi, w, ctx.periodic,
-                                                     positionMass_[i].w * self, fluidF_,
-                                                     fluidF_.of(ctx.neighbors, i).data(), pairOrder());
+                                                     positionMass_[i].w * self, fluidF_, fluidF_.of(ctx.neighbors, i).data(),
+                                                     pairOrder(), uniform ? &sums : nullptr);
+            if (uniform) {
+                fluidGradient_[i] = fluidF_.unit() * glm::vec3(sums);
+                alpha_[i] = fluidF_.unit() * fluidF_.unit() * sums.w;
+            }
             float volume = 0.0f;
             PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
             for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
@@ -94,10 +103,9 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
         const float mi = p.mass[i];
         glm::vec3 fluidGrad(0.0f), wallGrad(0.0f);
         float sumSquares = 0.0f;
-        if (uniform) {  // in SIMD lanes over the (x_j, m_j) rows: m_j = m_i
-            const glm::vec4 sums = pair_sums::gradientAndSquaresSum(fluidPairs(ctx, i), positionMass_.data(), xi, ctx.periodic);
-            fluidGrad = fluidF_.unit() * glm::vec3(sums);
-            sumSquares = fluidF_.unit() * fluidF_.unit() * sums.w;
+        if (uniform) {  // summed in prepare's pass, in SIMD lanes over the (x_j, m_j) rows (m_j = m_i)
+            fluidGrad = fluidGradient_[i];
+            sumSquares = alpha_[i];
         } else {
             const PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
             for (const std::uint32_t j : ctx.neighbors.of(i)) {
@@ -449,7 +457,8 @@ double DfsphBender2017::step(StepContext& ctx) {
     // 0.24 m tank at rest with 1 ms steps (drift time 5 ms) the pressure written every 25th
     // step read 0.91 ρgd at every depth while its mean over all steps was 1.00. There the
     // pressure reported is a running mean over the drift time (weight Δt/drift time: 0.2), so
-    // frames read it wherever they fall in the cycle; steps of the drift time report their own.
+    // frames read it wherever they fall in the cycle; steps of the drift time report their own
+    // (a step shortened to land on a frame mixes in the last report by the same weight).
     const float lastWeight = static_cast<float>(lastDt_ / (lastDt_ + dt)), weight = 1.0f - lastWeight;
     const float smoothing = static_cast<float>(std::min(1.0, dt / driftTime));
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {

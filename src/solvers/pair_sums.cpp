@@ -36,9 +36,13 @@ float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::
 }
 
 template <bool Periodic>
+glm::vec4 gradientAndSquaresSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
+                                const PeriodicBox& box);
+
+template <bool Periodic>
 float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                         const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
-                        std::uint16_t* codes) {
+                        std::uint16_t* codes, glm::vec4* gradients) {
     float sum = initial;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
         const glm::vec4 xj = points[neighbors.index[k]];
@@ -47,6 +51,8 @@ float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, con
         sum += xj.w * w.value(r);
         codes[k] = factors.encode(w, r);
     }
+    if (gradients != nullptr)
+        *gradients = gradientAndSquaresSum<Periodic>({neighbors.index, codes, neighbors.count}, points, xi, box);
     return sum;
 }
 
@@ -161,8 +167,8 @@ float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm:
 template <bool Periodic>
 float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                          const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
-                         std::uint16_t* codes) {
-    return sequential::kernelSumAndCodes<Periodic>(neighbors, points, xi, w, box, initial, factors, codes);
+                         std::uint16_t* codes, glm::vec4* gradients) {
+    return sequential::kernelSumAndCodes<Periodic>(neighbors, points, xi, w, box, initial, factors, codes, gradients);
 }
 template <bool Periodic>
 glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, const PeriodicBox& box) {
@@ -208,15 +214,17 @@ static_assert(hn::MaxLanes(D()) == 4 || hn::MaxLanes(D()) == 8, "rows of four fl
 
 /// PairKernels::magnitude of the codes of neighbours k …; 0 past the list's end (the codes
 /// are read kPadding past it, and masked).
-HWY_INLINE V LoadMagnitudes(const Neighbors& neighbors, std::size_t k) {
+HWY_INLINE V MagnitudesOf(hn::Vec<DU16> codes, std::size_t left) {
     const D d;
     const DU du;
-    const DU16 du16;
-    const auto code = hn::PromoteTo(du, hn::LoadU(du16, neighbors.code + k));
+    const auto code = hn::PromoteTo(du, codes);
     const auto bits = hn::ShiftLeft<PairKernels::kDropped>(
         hn::Add(code, hn::Set(du, PairKernels::kLowestExponent << PairKernels::kMantissaBits)));
-    const auto zero = hn::Or(hn::RebindMask(d, hn::Eq(code, hn::Zero(du))), hn::Not(hn::FirstN(d, neighbors.count - k)));
+    const auto zero = hn::Or(hn::RebindMask(d, hn::Eq(code, hn::Zero(du))), hn::Not(hn::FirstN(d, left)));
     return hn::IfThenZeroElse(zero, hn::BitCast(d, bits));
+}
+HWY_INLINE V LoadMagnitudes(const Neighbors& neighbors, std::size_t k) {
+    return MagnitudesOf(hn::LoadU(DU16(), neighbors.code + k), neighbors.count - k);
 }
 
 /// Four floats from each of `lanes` rows, transposed into one vector per column.
@@ -327,11 +335,12 @@ HWY_INLINE hn::Vec<DU16> EncodeFactors(V r, const kernels::CubicSpline& w, float
 template <bool Periodic>
 float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                          const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
-                         std::uint16_t* codes) {
+                         std::uint16_t* codes, glm::vec4* gradients) {
     const D d;
     const DU16 du16;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z), invH = hn::Set(d, w.invH);
     V sum = hn::Zero(d);
+    V gx = hn::Zero(d), gy = hn::Zero(d), gz = hn::Zero(d), squares = hn::Zero(d);
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
         const Columns j = LoadRows(points, neighbors, k);
         const PairVectors d3 = Delta<Periodic>(xx, xy, xz, j, box);
@@ -339,6 +348,14 @@ float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, co
         const V r = hn::Sqrt(hn::Add(hn::Add(hn::Mul(d3.x, d3.x), hn::Mul(d3.y, d3.y)), hn::Mul(d3.z, d3.z)));
         sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), SplineOverSigma(hn::Mul(r, invH)), sum);
         const auto code = EncodeFactors(r, w, factors.invUnit());
+        if (gradients != nullptr) {  // GradientAndSquaresSumT over the codes just made, operation for operation
+            const V s = hn::Mul(j.w, MagnitudesOf(code, neighbors.count - k));
+            const V x = hn::Mul(s, d3.x), y = hn::Mul(s, d3.y), z = hn::Mul(s, d3.z);
+            gx = hn::Add(gx, x);
+            gy = hn::Add(gy, y);
+            gz = hn::Add(gz, z);
+            squares = hn::MulAdd(x, x, hn::MulAdd(y, y, hn::MulAdd(z, z, squares)));
+        }
         if (neighbors.count - k >= hn::Lanes(d)) {
             hn::StoreU(code, du16, codes + k);
         } else {  // not past the list: the next one's codes may be another thread's
@@ -347,6 +364,9 @@ float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, co
             for (std::size_t l = 0; k + l < neighbors.count; ++l) codes[k + l] = tail[l];
         }
     }
+    if (gradients != nullptr)
+        *gradients = {hn::GetLane(hn::SumOfLanes(d, gx)), hn::GetLane(hn::SumOfLanes(d, gy)),
+                      hn::GetLane(hn::SumOfLanes(d, gz)), hn::GetLane(hn::SumOfLanes(d, squares))};
     return initial + w.sigma * hn::GetLane(hn::SumOfLanes(d, sum));
 }
 
@@ -495,9 +515,9 @@ float KernelSumImpl(const Neighbors& neighbors, const glm::vec4* points, const g
 }
 float KernelSumAndCodesImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                             const kernels::CubicSpline& w, const PeriodicBox& box, float initial,
-                            const PairKernels& factors, std::uint16_t* codes) {
-    return box.any ? KernelSumAndCodesT<true>(neighbors, points, xi, w, box, initial, factors, codes)
-                   : KernelSumAndCodesT<false>(neighbors, points, xi, w, box, initial, factors, codes);
+                            const PairKernels& factors, std::uint16_t* codes, glm::vec4* gradients) {
+    return box.any ? KernelSumAndCodesT<true>(neighbors, points, xi, w, box, initial, factors, codes, gradients)
+                   : KernelSumAndCodesT<false>(neighbors, points, xi, w, box, initial, factors, codes, gradients);
 }
 glm::vec3 GradientSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                           const PeriodicBox& box) {
@@ -584,11 +604,11 @@ float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::
 }
 float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                         const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
-                        std::uint16_t* codes, Order order) {
+                        std::uint16_t* codes, Order order, glm::vec4* gradients) {
     if (order == Order::Sequential)
-        return box.any ? sequential::kernelSumAndCodes<true>(neighbors, points, xi, w, box, initial, factors, codes)
-                       : sequential::kernelSumAndCodes<false>(neighbors, points, xi, w, box, initial, factors, codes);
-    return targets().kernelSumAndCodes(neighbors, points, xi, w, box, initial, factors, codes);
+        return box.any ? sequential::kernelSumAndCodes<true>(neighbors, points, xi, w, box, initial, factors, codes, gradients)
+                       : sequential::kernelSumAndCodes<false>(neighbors, points, xi, w, box, initial, factors, codes, gradients);
+    return targets().kernelSumAndCodes(neighbors, points, xi, w, box, initial, factors, codes, gradients);
 }
 glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                       const PeriodicBox& box, Order order) {

@@ -48,10 +48,11 @@ float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::
                 const kernels::CubicSpline& w, const PeriodicBox& box, float initial = 0.0f, Order order = Order::Lanes);
 
 /// kernelSum, and each pair's coded gradient factor, factors.encode(w, r_ij), written to
-/// codes[k] for k < count (and nothing past it: the next list's codes may be another thread's).
+/// codes[k] for k < count (and nothing past it: the next list's codes may be another thread's);
+/// with `gradients`, also gradientAndSquaresSum over those codes, bit for bit, in the same pass.
 float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                         const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
-                        std::uint16_t* codes, Order order = Order::Lanes);
+                        std::uint16_t* codes, Order order = Order::Lanes, glm::vec4* gradients = nullptr);
 
 /// Σ_j w_j m_ij (x_i − x_j), with m_ij = PairKernels::magnitude(code_ij).
 glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
