@@ -262,8 +262,8 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
             if (finite)
                 for (; last < end && last - first < kMaxGroup; ++last) {
                     const glm::vec3 q = query(last);
+                    if (!(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z))) break;  // a group of its own, no hits
                     const glm::vec3 a2 = glm::min(a, q), b2 = glm::max(b, q);
-                    // (a NaN coordinate fails the test and ends the group)
                     if (!(b2.x - a2.x <= span && b2.y - a2.y <= span && b2.z - a2.z <= span)) break;
                     a = a2;
                     b = b2;
