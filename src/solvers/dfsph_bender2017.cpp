@@ -90,9 +90,7 @@ void DfsphBender2017::prepare(StepContext& ctx) {
 void DfsphBender2017::computeAlpha(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
-    alpha_.resize(n);
-    fluidGradient_.resize(n);
-    wallGradient_.resize(n);
+    wallGradient_.resize(n);  // alpha_ and fluidGradient_: sized in prepare
     if (ctx.boundary.moving) wallVelocityRate_.resize(n);
     const bool uniform = contrast_.uniform();
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {

@@ -186,11 +186,6 @@ float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const 
     return sequential::divergenceSum<Periodic>(neighbors, points, velocities, xi, vi, box);
 }
 template <bool Periodic>
-glm::vec4 GradientAndSquaresSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                 const PeriodicBox& box) {
-    return sequential::gradientAndSquaresSum<Periodic>(neighbors, points, xi, box);
-}
-template <bool Periodic>
 glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
                    const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
     return sequential::xsphSum<Periodic>(neighbors, points, velocities, xi, vi, w, box);
@@ -250,6 +245,15 @@ HWY_INLINE V SplineOverSigma(V q) {
     const V outer = hn::Max(hn::Sub(hn::Set(d, 1.0f), q), zero), inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
     return hn::Sub(hn::Mul(hn::Set(d, 2.0f), hn::Mul(outer, hn::Mul(outer, outer))),
                    hn::Mul(hn::Set(d, 8.0f), hn::Mul(inner, hn::Mul(inner, inner))));
+}
+
+/// W'(r) h/σ, the cubic spline's derivative less its factor σ/h: 24(½ − q)₊² − 6(1 − q)₊² at
+/// q = r/h, as CubicSpline::derivative.
+HWY_INLINE V DerivativeOverSigma(V q) {
+    const D d;
+    const V zero = hn::Zero(d);
+    const V outer = hn::Max(hn::Sub(hn::Set(d, 1.0f), q), zero), inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
+    return hn::Sub(hn::Mul(hn::Set(d, 24.0f), hn::Mul(inner, inner)), hn::Mul(hn::Set(d, 6.0f), hn::Mul(outer, outer)));
 }
 
 /// Rows r_l = row(l) (four floats each) to columns: loads, then the 4 × 4 transposes of SSE
@@ -348,7 +352,7 @@ float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, co
         const V r = hn::Sqrt(hn::Add(hn::Add(hn::Mul(d3.x, d3.x), hn::Mul(d3.y, d3.y)), hn::Mul(d3.z, d3.z)));
         sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), SplineOverSigma(hn::Mul(r, invH)), sum);
         const auto code = EncodeFactors(r, w, factors.invUnit());
-        if (gradients != nullptr) {  // GradientAndSquaresSumT over the codes just made, operation for operation
+        if (gradients != nullptr) {  // α's sums over the codes just made
             const V s = hn::Mul(j.w, MagnitudesOf(code, neighbors.count - k));
             const V x = hn::Mul(s, d3.x), y = hn::Mul(s, d3.y), z = hn::Mul(s, d3.z);
             gx = hn::Add(gx, x);
@@ -387,26 +391,6 @@ glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, cons
 }
 
 template <bool Periodic>
-glm::vec4 GradientAndSquaresSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                 const PeriodicBox& box) {
-    const D d;
-    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
-    V sx = hn::Zero(d), sy = hn::Zero(d), sz = hn::Zero(d), squares = hn::Zero(d);
-    for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadRows(points, neighbors, k);
-        const V s = hn::Mul(j.w, LoadMagnitudes(neighbors, k));
-        const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
-        const V gx = hn::Mul(s, r.x), gy = hn::Mul(s, r.y), gz = hn::Mul(s, r.z);
-        sx = hn::Add(sx, gx);
-        sy = hn::Add(sy, gy);
-        sz = hn::Add(sz, gz);
-        squares = hn::MulAdd(gx, gx, hn::MulAdd(gy, gy, hn::MulAdd(gz, gz, squares)));
-    }
-    return {hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)), hn::GetLane(hn::SumOfLanes(d, sz)),
-            hn::GetLane(hn::SumOfLanes(d, squares))};
-}
-
-template <bool Periodic>
 float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                      const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     const D d;
@@ -430,8 +414,8 @@ glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
     const V vx = hn::Set(d, vi.x), vy = hn::Set(d, vi.y), vz = hn::Set(d, vi.z);
-    const V invH = hn::Set(d, w.invH), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), zero = hn::Zero(d);
-    const V eps = hn::Set(d, epsilon), c24 = hn::Set(d, 24.0f), c6 = hn::Set(d, 6.0f);
+    const V invH = hn::Set(d, w.invH), zero = hn::Zero(d);
+    const V eps = hn::Set(d, epsilon);
     V sx = zero, sy = zero, sz = zero;
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
         const Columns j = LoadRows(points, neighbors, k);
@@ -440,8 +424,7 @@ glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const
         const V r2 = hn::Add(hn::Add(hn::Mul(r.x, r.x), hn::Mul(r.y, r.y)), hn::Mul(r.z, r.z));
         const V q = hn::Mul(hn::Sqrt(r2), invH);
         // r W'(r) h/σ = q (24(½ − q)₊² − 6(1 − q)₊²) h², the σ/h² outside the sum
-        const V outer = hn::Max(hn::Sub(one, q), zero), inner = hn::Max(hn::Sub(half, q), zero);
-        const V rDerivative = hn::Mul(q, hn::Sub(hn::Mul(c24, hn::Mul(inner, inner)), hn::Mul(c6, hn::Mul(outer, outer))));
+        const V rDerivative = hn::Mul(q, DerivativeOverSigma(q));
         const V weight = hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), hn::Mul(j.w, v.w));
         const V s = hn::Div(hn::Mul(weight, rDerivative), hn::Add(r2, eps));
         sx = hn::MulAdd(s, hn::Sub(vx, v.x), sx);
@@ -481,16 +464,14 @@ GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* po
                                  const kernels::CubicSpline& w, const PeriodicBox& box) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z), invH = hn::Set(d, w.invH);
-    const V zero = hn::Zero(d), one = hn::Set(d, 1.0f), half = hn::Set(d, 0.5f), c24 = hn::Set(d, 24.0f), c6 = hn::Set(d, 6.0f);
+    const V zero = hn::Zero(d);
     V px = zero, py = zero, pz = zero, wx = zero, wy = zero, wz = zero;
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
         const Columns j = LoadRows(points, neighbors, k);
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         const V length = hn::Sqrt(hn::MulAdd(r.x, r.x, hn::MulAdd(r.y, r.y, hn::Mul(r.z, r.z))));
         // W'(r)/r h/σ = (24(½ − q)₊² − 6(1 − q)₊²)/r, the σ/h outside the sums; 0 at r = 0 and past the list
-        const V q = hn::Mul(length, invH);
-        const V outer = hn::Max(hn::Sub(one, q), zero), inner = hn::Max(hn::Sub(half, q), zero);
-        const V derivative = hn::Sub(hn::Mul(c24, hn::Mul(inner, inner)), hn::Mul(c6, hn::Mul(outer, outer)));
+        const V derivative = DerivativeOverSigma(hn::Mul(length, invH));
         const auto counted = hn::And(hn::FirstN(d, neighbors.count - k), hn::Gt(length, zero));
         const V f = hn::IfThenElseZero(counted, hn::Div(derivative, length));
         px = hn::MulAdd(f, r.x, px);
@@ -522,11 +503,6 @@ float KernelSumAndCodesImpl(const Neighbors& neighbors, const glm::vec4* points,
 glm::vec3 GradientSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                           const PeriodicBox& box) {
     return box.any ? GradientSumT<true>(neighbors, points, xi, box) : GradientSumT<false>(neighbors, points, xi, box);
-}
-glm::vec4 GradientAndSquaresSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                    const PeriodicBox& box) {
-    return box.any ? GradientAndSquaresSumT<true>(neighbors, points, xi, box)
-                   : GradientAndSquaresSumT<false>(neighbors, points, xi, box);
 }
 float DivergenceSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                         const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
@@ -561,7 +537,6 @@ namespace tide::pair_sums {
 HWY_EXPORT(KernelSumImpl);
 HWY_EXPORT(KernelSumAndCodesImpl);
 HWY_EXPORT(GradientSumImpl);
-HWY_EXPORT(GradientAndSquaresSumImpl);
 HWY_EXPORT(DivergenceSumImpl);
 HWY_EXPORT(ViscousSumImpl);
 HWY_EXPORT(XsphSumImpl);
@@ -577,7 +552,6 @@ struct Targets {
     decltype(&HWY_STATIC_DISPATCH(KernelSumImpl)) kernelSum;
     decltype(&HWY_STATIC_DISPATCH(KernelSumAndCodesImpl)) kernelSumAndCodes;
     decltype(&HWY_STATIC_DISPATCH(GradientSumImpl)) gradientSum;
-    decltype(&HWY_STATIC_DISPATCH(GradientAndSquaresSumImpl)) gradientAndSquaresSum;
     decltype(&HWY_STATIC_DISPATCH(DivergenceSumImpl)) divergenceSum;
     decltype(&HWY_STATIC_DISPATCH(ViscousSumImpl)) viscousSum;
     decltype(&HWY_STATIC_DISPATCH(XsphSumImpl)) xsphSum;
@@ -585,10 +559,10 @@ struct Targets {
 };
 Targets chooseTargets() {
     (void)HWY_DYNAMIC_DISPATCH(InstructionSetImpl)();  // a first dispatch chooses the target
-    return Targets{&HWY_DYNAMIC_DISPATCH(KernelSumImpl),     &HWY_DYNAMIC_DISPATCH(KernelSumAndCodesImpl),
-                   &HWY_DYNAMIC_DISPATCH(GradientSumImpl),   &HWY_DYNAMIC_DISPATCH(GradientAndSquaresSumImpl),
-                   &HWY_DYNAMIC_DISPATCH(DivergenceSumImpl), &HWY_DYNAMIC_DISPATCH(ViscousSumImpl),
-                   &HWY_DYNAMIC_DISPATCH(XsphSumImpl),       &HWY_DYNAMIC_DISPATCH(KernelGradientSumsImpl)};
+    return Targets{&HWY_DYNAMIC_DISPATCH(KernelSumImpl),   &HWY_DYNAMIC_DISPATCH(KernelSumAndCodesImpl),
+                   &HWY_DYNAMIC_DISPATCH(GradientSumImpl), &HWY_DYNAMIC_DISPATCH(DivergenceSumImpl),
+                   &HWY_DYNAMIC_DISPATCH(ViscousSumImpl),  &HWY_DYNAMIC_DISPATCH(XsphSumImpl),
+                   &HWY_DYNAMIC_DISPATCH(KernelGradientSumsImpl)};
 }
 // Chosen when the program loads (no sums run before main), so a call reads a plain global.
 const Targets kTargets = chooseTargets();
@@ -616,13 +590,6 @@ glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const
         return box.any ? sequential::gradientSum<true>(neighbors, points, xi, box)
                        : sequential::gradientSum<false>(neighbors, points, xi, box);
     return targets().gradientSum(neighbors, points, xi, box);
-}
-glm::vec4 gradientAndSquaresSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                const PeriodicBox& box, Order order) {
-    if (order == Order::Sequential)
-        return box.any ? sequential::gradientAndSquaresSum<true>(neighbors, points, xi, box)
-                       : sequential::gradientAndSquaresSum<false>(neighbors, points, xi, box);
-    return targets().gradientAndSquaresSum(neighbors, points, xi, box);
 }
 float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box, Order order) {

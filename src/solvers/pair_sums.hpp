@@ -49,7 +49,9 @@ float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::
 
 /// kernelSum, and each pair's coded gradient factor, factors.encode(w, r_ij), written to
 /// codes[k] for k < count (and nothing past it: the next list's codes may be another thread's);
-/// with `gradients`, also gradientAndSquaresSum over those codes, bit for bit, in the same pass.
+/// with `gradients`, also (Σ_j g_ij, Σ_j |g_ij|²) over those codes, g_ij = w_j m_ij (x_i − x_j)
+/// with m_ij = PairKernels::magnitude(code_ij): the two sums of DFSPH's factor α_i (Bender &
+/// Koschier 2017, eq. 11) in units of PairKernels::unit(), from the same pass.
 float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                         const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
                         std::uint16_t* codes, Order order = Order::Lanes, glm::vec4* gradients = nullptr);
@@ -57,11 +59,6 @@ float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, con
 /// Σ_j w_j m_ij (x_i − x_j), with m_ij = PairKernels::magnitude(code_ij).
 glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                       const PeriodicBox& box, Order order = Order::Lanes);
-
-/// (Σ_j g_ij, Σ_j |g_ij|²) with g_ij = w_j m_ij (x_i − x_j), m_ij as above: the two sums of
-/// DFSPH's factor α_i (Bender & Koschier 2017, eq. 11) in units of PairKernels::unit().
-glm::vec4 gradientAndSquaresSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                const PeriodicBox& box, Order order = Order::Lanes);
 
 /// Σ_j w_j m_ij (v_i − v_j)·(x_i − x_j), with m_ij as above and (v_j, ·) = velocities[j].
 float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
