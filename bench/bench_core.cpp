@@ -67,7 +67,7 @@ void BM_PairSums(benchmark::State& state) {
     for (auto _ : state) {
         for (std::uint32_t i = 0; i < x.size(); ++i) {
             const auto neighbors = list.of(i);
-            const tide::pair_sums::Neighbors pairs{neighbors.data(), factors.of(list, i).data(), neighbors.size()};
+            const tide::pair_sums::Neighbors pairs(neighbors, factors.of(list, i).data());
             if (sum == 0) total += tide::pair_sums::kernelSum(pairs, points.data(), x[i], w, box, 0.0f, order);
             else if (sum == 1) total += tide::pair_sums::gradientSum(pairs, points.data(), x[i], box, order).x;
             else total += tide::pair_sums::divergenceSum(pairs, points.data(), velocities.data(), x[i], v[i], box, order);

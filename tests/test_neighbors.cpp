@@ -81,16 +81,21 @@ TEST(Neighbors, PairOffsetsTileThePairRangeForAnyThreadCount) {
     for (int threads : {1, 2, 3}) {
         NeighborList list;
         list.build(grid, x, h, threads);
-        std::vector<int> covered(list.pairCount(), 0);
+        std::vector<int> covered(list.slotCount(), 0);
         std::vector<std::uint64_t> offsets;
+        std::uint64_t pairs = 0;
         for (std::uint32_t i = 0; i < x.size(); ++i) {
             offsets.push_back(list.offset(i));
+            pairs += list.of(i).size();
             for (std::uint64_t k = 0; k < list.of(i).size(); ++k) {
-                ASSERT_LT(list.offset(i) + k, list.pairCount()) << "particle " << i;
+                ASSERT_LT(list.offset(i) + k, list.slotCount()) << "particle " << i;
                 ++covered[list.offset(i) + k];
             }
         }
-        EXPECT_TRUE(std::ranges::all_of(covered, [](int c) { return c == 1; })) << threads << " threads";
+        EXPECT_EQ(pairs, list.pairCount());
+        // Each pair has a slot of its own; lists of offsets leave at most a block's padding each.
+        EXPECT_TRUE(std::ranges::all_of(covered, [](int c) { return c <= 1; })) << threads << " threads";
+        EXPECT_LT(list.slotCount(), list.pairCount() + x.size() * NeighborList::kOffsetBlock);
         if (reference.empty()) reference = offsets;
         EXPECT_EQ(offsets, reference) << threads << " threads";
     }
@@ -105,8 +110,8 @@ TEST(Neighbors, CrossSetQueryMatchesBruteForce) {
     for (int i = 0; i < 300; ++i) queries.emplace_back(u(rng), u(rng), u(rng));
     UniformGrid grid;
     grid.build(sources, h, 2);
-    NeighborList list;
-    list.buildCross(grid, sources, queries, h, 2);
+    tide::CrossNeighborList list;
+    list.build(grid, sources, queries, h, 2);
     for (std::uint32_t i = 0; i < queries.size(); ++i) {
         std::vector<std::uint32_t> expected;
         for (std::uint32_t j = 0; j < sources.size(); ++j)
@@ -138,8 +143,8 @@ TEST(Neighbors, CrossListsOfQueriesInCellOrderKeepTheGridsOrder) {
     std::vector<std::uint32_t> rank(sources.size());
     for (std::uint32_t k = 0; k < sources.size(); ++k) rank[grid.sortedParticles()[k]] = k;
     for (const int threads : {1, 2}) {
-        NeighborList list;
-        list.buildCross(grid, sources, ordered, h, threads);
+        tide::CrossNeighborList list;
+        list.build(grid, sources, ordered, h, threads);
         std::size_t pairs = 0;
         for (std::uint32_t i = 0; i < ordered.size(); ++i) {
             std::vector<std::uint32_t> expected;
@@ -153,6 +158,41 @@ TEST(Neighbors, CrossListsOfQueriesInCellOrderKeepTheGridsOrder) {
         }
         EXPECT_GT(pairs, 100000u);  // the test has lists to compare
     }
+}
+
+// Lists of neighbours near in storage hold 16-bit offsets; a pair farther apart than an
+// offset reaches makes the build keep 32-bit indices, with the same lists.
+TEST(Neighbors, ListsKeepIndicesWhereOffsetsDoNotReach) {
+    const float h = 0.25f;
+    const auto near = testPoints(h);
+    UniformGrid grid;
+    grid.build(near, h, 2);
+    NeighborList list;
+    list.build(grid, near, h, 2);
+    EXPECT_TRUE(list.narrow());
+    // 40,000 points a metre apart, but the first and the last 0.1 m apart: 39,999 indices.
+    std::vector<glm::vec3> far;
+    for (int i = 0; i < 40000; ++i) far.emplace_back(2.0f + static_cast<float>(i % 34), static_cast<float>(i / 34 % 34), static_cast<float>(i / 1156));
+    far.front() = {0.0f, 0.0f, 0.0f};
+    far.back() = {0.1f, 0.0f, 0.0f};
+    far[1] = {0.0f, 0.2f, 0.0f};
+    grid.build(far, h, 2);
+    for (int threads : {1, 2}) {
+        list.build(grid, far, h, threads);
+        EXPECT_FALSE(list.narrow());
+        EXPECT_EQ(list.pairCount(), 6u);
+        for (const std::uint32_t i : {0u, 1u, 39999u, 2u, 20000u}) {
+            auto found = std::vector<std::uint32_t>(list.of(i).begin(), list.of(i).end());
+            std::sort(found.begin(), found.end());
+            ASSERT_EQ(found, bruteForce(far, i, h)) << "particle " << i;
+        }
+    }
+    // And the set that fits, with the same list after the misfit: the same lists as a fresh one.
+    grid.build(near, h, 2);
+    list.build(grid, near, h, 2);
+    NeighborList fresh;
+    fresh.build(grid, near, h, 2);
+    for (std::uint32_t i = 0; i < near.size(); ++i) ASSERT_TRUE(std::ranges::equal(list.of(i), fresh.of(i))) << "particle " << i;
 }
 
 TEST(Neighbors, FarStrayParticleDoesNotBlowUpTheGrid) {

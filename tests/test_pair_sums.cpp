@@ -57,8 +57,18 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
     std::vector<std::uint32_t> indices = candidates;
     indices.resize(indices.size() + pair_sums::kPadding, candidates.front());
     codes.resize(codes.size() + pair_sums::kPadding, 0xFFFF);
+    // The same neighbours as 16-bit offsets from i (NeighborList::build's form). Each count
+    // below reads them as a list padded to a whole block: the offsets past it are i's own (0)
+    // only from the next block on, so the lanes past the count must add nothing either way.
+    std::vector<std::int16_t> offsets;
+    for (const std::uint32_t j : candidates) offsets.push_back(static_cast<std::int16_t>(std::int64_t{j} - i));
+    offsets.resize((offsets.size() / NeighborList::kOffsetBlock + 1) * NeighborList::kOffsetBlock, 0);
+    for (const bool asOffsets : {false, true})
     for (std::size_t count = 0; count <= candidates.size(); ++count) {
-        const pair_sums::Neighbors neighbors{indices.data(), codes.data(), count};
+        SCOPED_TRACE(asOffsets ? "as offsets" : "as indices");
+        const auto n = static_cast<std::uint32_t>(count);
+        const pair_sums::Neighbors neighbors(asOffsets ? NeighborSpan(offsets.data(), i, n) : NeighborSpan(indices.data(), n),
+                                             codes.data());
         double kernel = 0.0, kernelScale = 0.0, divergence = 0.0, divergenceScale = 0.0;
         glm::dvec3 gradient(0.0), gradientScale(0.0), viscous(0.0), viscousScale(0.0);
         double squares = 0.0;

@@ -101,8 +101,8 @@ TEST(PeriodicNeighbors, CrossSetQueryMatchesBruteForce) {
     for (int i = 0; i < 300; ++i) queries.emplace_back(u(rng), 1.6f * u(rng) - 0.3f, u(rng));  // some beyond the y faces
     UniformGrid grid;
     grid.build(sources, h, 2, box);
-    NeighborList list;
-    list.buildCross(grid, sources, queries, h, 2);
+    tide::CrossNeighborList list;
+    list.build(grid, sources, queries, h, 2);
     for (std::uint32_t i = 0; i < queries.size(); ++i) {
         auto found = std::vector<std::uint32_t>(list.of(i).begin(), list.of(i).end());
         std::sort(found.begin(), found.end());

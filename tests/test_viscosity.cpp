@@ -39,11 +39,12 @@ glm::vec3 operatorAtCentre(ViscosityModel model, const Field& field) {
             }
     UniformGrid grid;
     grid.build(p.position, h, 1);
-    NeighborList neighbors, boundaryNeighbors, boundaryFluidNeighbors;
+    NeighborList neighbors;
+    CrossNeighborList boundaryNeighbors, boundaryFluidNeighbors;
     neighbors.build(grid, p.position, h, 1);
     BoundaryParticles boundary;
-    boundaryNeighbors.buildCross(boundary.grid, boundary.position, p.position, h, 1);
-    boundaryFluidNeighbors.buildCross(grid, p.position, boundary.position, h, 1);
+    boundaryNeighbors.build(boundary.grid, boundary.position, p.position, h, 1);
+    boundaryFluidNeighbors.build(grid, p.position, boundary.position, h, 1);
     const std::vector<MaterialDef> materials{MaterialDef{"unit", 1.0f, 1.0f, {}}};
     const SolverDef solver;
     StepContext ctx{p, neighbors, materials, solver, glm::vec3(0.0f), h, s, 10.0f, boundary, boundaryNeighbors,

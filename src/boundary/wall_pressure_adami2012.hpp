@@ -35,7 +35,7 @@ public:
     /// current positions (the kernel values are kept: the solves call update() every
     /// iteration). κ_b is kept for the boundary particles near fluid only: the fluid reads no
     /// other, and the shell has several times more (memory: issue 8).
-    void prepare(const BoundaryParticles& boundary, const NeighborList& fluidNear, std::span<const std::uint32_t> near,
+    void prepare(const BoundaryParticles& boundary, const CrossNeighborList& fluidNear, std::span<const std::uint32_t> near,
                  std::span<const glm::vec3> fluid, const PeriodicBox& box, const glm::vec3& gravity, float supportRadius,
                  int threads, std::span<const float> fluidScale = {}) {
         const kernels::CubicSpline w(supportRadius);
@@ -45,7 +45,7 @@ public:
         weightSum_.resize(n);
         gravityTerm_.resize(n);
         kappa_.resize(n);
-        resizeScratch(weights_, fluidNear.pairCount());
+        resizeScratch(weights_, fluidNear.slotCount());
         parallelFor(n, threads, [&](std::uint32_t a) {
             const std::uint32_t b = near[a];
             const glm::vec3 xb = boundary.position[b];
@@ -67,14 +67,14 @@ public:
 
     /// κ_b from the fluid's κ_f over the lists and positions prepare() saw; read by boundary
     /// particle with kappa().
-    void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads) {
+    void update(const CrossNeighborList& fluidNear, std::span<const float> fluidKappa, int threads) {
         byBoundary_.resize(boundaryCount_);
         update(fluidNear, fluidKappa, threads, [&](std::uint32_t b, float updated, float) { byBoundary_[b] = updated; });
     }
     /// As above, but what a solve that pushes with the change of κ needs instead of κ_b:
     /// change[b] = (new κ_b − last κ_b)·scale for each b near fluid (the others are left as
     /// they are), with no array of κ_b over the whole shell.
-    void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads, float scale,
+    void update(const CrossNeighborList& fluidNear, std::span<const float> fluidKappa, int threads, float scale,
                 std::span<float> change) {
         update(fluidNear, fluidKappa, threads,
                [&](std::uint32_t b, float updated, float last) { change[b] = (updated - last) * scale; });
@@ -86,7 +86,7 @@ public:
 
 private:
     template <class OnUpdate>
-    void update(const NeighborList& fluidNear, std::span<const float> fluidKappa, int threads, OnUpdate&& onUpdate) {
+    void update(const CrossNeighborList& fluidNear, std::span<const float> fluidKappa, int threads, OnUpdate&& onUpdate) {
         parallelFor(static_cast<std::uint32_t>(near_.size()), threads, [&](std::uint32_t a) {
             float updated = kappa_[a];  // 0 (prepare) where the kernel sum is 0
             if (weightSum_[a] > 0.0f) {

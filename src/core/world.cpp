@@ -117,8 +117,8 @@ struct World::Impl {
     UniformGrid grid;
     NeighborList neighbors;
     BoundaryParticles boundary;
-    NeighborList boundaryNeighbors;       ///< boundary particles near each fluid particle
-    NeighborList boundaryFluidNeighbors;  ///< fluid particles near each boundary particle near fluid
+    CrossNeighborList boundaryNeighbors;       ///< boundary particles near each fluid particle
+    CrossNeighborList boundaryFluidNeighbors;  ///< fluid particles near each boundary particle near fluid
     /// The boundary particles within h of fluid, ascending (the wall pressure's queries): a
     /// container's shell outnumbers the fluid (2.7 to 1 in the 50k benchmark dam break) and
     /// most of it is far from the water; lists and per-step arrays sized to all of it cost
@@ -276,10 +276,10 @@ struct World::Impl {
             stepsSinceReorder = 0;
         }
         neighbors.build(grid, particles.position, h, threads);
-        boundaryNeighbors.buildCross(boundary.grid, boundary.position, particles.position, h, threads);
+        boundaryNeighbors.build(boundary.grid, boundary.position, particles.position, h, threads);
         if (solver->usesWallPressure()) {
             findBoundaryNearFluid();
-            boundaryFluidNeighbors.buildCross(grid, particles.position, boundary.position, h, threads, boundaryNearFluid);
+            boundaryFluidNeighbors.build(grid, particles.position, boundary.position, h, threads, boundaryNearFluid);
         }
     }
 

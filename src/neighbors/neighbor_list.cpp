@@ -6,6 +6,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include <glm/common.hpp>
 
@@ -35,6 +36,15 @@ struct CandidateSet {
 
     [[nodiscard]] std::size_t size() const { return count_; }
 
+    /// Writes to `out` the offsets j − i of the candidates j within the radius of q = x_i,
+    /// skipping i (within_radius::selectOffsets); returns how many. `out` is scratch: grown to
+    /// the room the test needs, never shrunk or cleared.
+    std::size_t offsetsWithin(const glm::vec3& q, float radius2, std::uint32_t i, const PeriodicBox& box,
+                              std::vector<std::int16_t>& out, bool& misfit) const {
+        if (out.size() < count_ + within_radius::kBlock) out.resize(count_ + within_radius::kBlock);
+        return within_radius::selectOffsets({x.data(), y.data(), z.data(), index.data(), count_}, q, radius2, i, box,
+                                            out.data(), misfit);
+    }
     /// Appends to `out` the candidates within the radius of q, skipping `skip` (distances to
     /// the nearest periodic image), in candidate order.
     void appendWithin(const glm::vec3& q, float radius2, std::uint32_t skip, const PeriodicBox& box,
@@ -80,14 +90,24 @@ private:
 /// filling copies it, the old block and the new resident together (the run's peak memory on
 /// the 50k dam break, when a splash adds pairs), while an empty buffer is re-allocated
 /// without a copy.
-void clearWithRoom(std::vector<std::uint32_t>& buffer) {
+template <class Entry>
+void clearWithRoom(std::vector<Entry>& buffer) {
     const std::size_t last = buffer.size();
     buffer.clear();
     if (buffer.capacity() < last + last / 16) {
-        std::vector<std::uint32_t>().swap(buffer);
+        std::vector<Entry>().swap(buffer);
         buffer.reserve(last + last / 8);
     }
 }
+
+/// Frees every chunk's buffer (the lists of the other width).
+template <class Entry>
+void release(std::vector<std::vector<Entry>>& buffers) {
+    std::vector<std::vector<Entry>>().swap(buffers);
+}
+
+/// Builds that keep 32-bit indices after offsets did not fit, before offsets are tried again.
+constexpr int kWideBuildsAfterMisfit = 50;
 
 /// Chunks of a list build per thread, taken dynamically: the work per query is uneven (the wall
 /// shell lists its floor first, and most of the rest is far from the fluid), and one static
@@ -98,31 +118,35 @@ constexpr int kChunksPerThread = 8;
 
 }  // namespace
 
-template <class ForEachParticleOfChunk>
-void NeighborList::linkChunks(int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk) {
+template <class Entry, class ForEachParticleOfChunk>
+void NeighborList::linkChunks(std::vector<std::vector<Entry>>& buffers, std::vector<const Entry*>& data,
+                              std::uint32_t block, int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk) {
     chunkBase_.assign(static_cast<std::size_t>(chunks) + 1, 0);
-    chunkData_.resize(static_cast<std::size_t>(chunks));
+    data.resize(static_cast<std::size_t>(chunks));
     for (int c = 0; c < chunks; ++c) {
-        std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
-        // start_ is 32-bit: a chunk of 2^32 pairs (16 GiB of indices) would need more.
+        std::vector<Entry>& buffer = buffers[static_cast<std::size_t>(c)];
+        // start_ is 32-bit: a chunk of 2^32 pairs (8–16 GiB of lists) would need more.
         if (buffer.size() > std::numeric_limits<std::uint32_t>::max())
             throw std::length_error("NeighborList: more than 2^32 pairs in one chunk");
         chunkBase_[c + 1] = chunkBase_[c] + buffer.size();
         reserveGrowing(buffer, buffer.size() + kReadPast);
-        buffer.resize(buffer.size() + kReadPast, 0u);  // not pairs: room to read past the last list
-        chunkData_[static_cast<std::size_t>(c)] = buffer.data();
+        buffer.resize(buffer.size() + kReadPast, Entry{0});  // not pairs: room to read past the last list
+        data[static_cast<std::size_t>(c)] = buffer.data();
     }
-    pairs_ = chunkBase_[chunks];
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+    slots_ = chunkBase_[chunks];
+    std::uint64_t pairs = 0;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) reduction(+ : pairs)
     for (int c = 0; c < chunks; ++c) {
         std::uint32_t next = 0;
         const std::uint32_t tag = static_cast<std::uint32_t>(c) << kCountBits;
         forEachParticleOfChunk(c, [&](std::uint32_t i) {
             start_[i] = next;
-            next += count_[i];
+            next += (count_[i] + block - 1) / block * block;
+            pairs += count_[i];
             count_[i] |= tag;
         });
     }
+    pairs_ = pairs;
 }
 
 namespace {
@@ -136,9 +160,30 @@ void throwIfTooMany(const std::atomic<bool>& tooMany, std::uint32_t limit) {
 
 void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads) {
     const auto n = static_cast<std::uint32_t>(positions.size());
-    const float radius2 = radius * radius;
     start_.resize(n);
     count_.resize(n);
+    // Offsets are computed in 32 bits.
+    if (wideBuilds_ == 0 && n <= static_cast<std::uint32_t>(std::numeric_limits<std::int32_t>::max())) {
+        if (search(grid, positions, radius, threads, offsetBuffers_, chunkOffsets_)) {
+            narrow_ = true;
+            release(chunkBuffers_);
+            return;
+        }
+        release(offsetBuffers_);  // before the indices take their place: not both at the peak
+        wideBuilds_ = kWideBuildsAfterMisfit;
+    } else {
+        --wideBuilds_;
+    }
+    search(grid, positions, radius, threads, chunkBuffers_, chunkData_);
+    narrow_ = false;
+}
+
+template <class Entry>
+bool NeighborList::search(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads,
+                          std::vector<std::vector<Entry>>& buffers, std::vector<const Entry*>& data) {
+    constexpr bool kOffsets = std::is_same_v<Entry, std::int16_t>;
+    const auto n = static_cast<std::uint32_t>(positions.size());
+    const float radius2 = radius * radius;
     // Cells are split into contiguous ranges, balanced by particle count.
     const int chunks = n >= kParallelGrain ? std::min(threads * kChunksPerThread, kMaxChunks) : 1;
     const std::uint32_t cells = grid.cellCount();
@@ -152,40 +197,56 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
         }
         firstCell[c] = c == 0 ? 0 : lo;
     }
-    chunkBuffers_.resize(static_cast<std::size_t>(chunks));
+    buffers.resize(static_cast<std::size_t>(chunks));
     const auto sorted = grid.sortedParticles();
     const glm::ivec3 dims = grid.dims();
     auto forEachCell = [&](int c, auto&& f) {
         for (std::uint32_t cell = firstCell[c]; cell < firstCell[c + 1]; ++cell)
             if (grid.cellStart(cell) < grid.cellStart(cell + 1)) f(cell);
     };
-    std::atomic<bool> tooMany{false};
+    std::atomic<bool> tooMany{false}, tooFar{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
-        std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
+        std::vector<Entry>& buffer = buffers[static_cast<std::size_t>(c)];
         clearWithRoom(buffer);
         CandidateSet candidates;
+        std::vector<std::int16_t> hits;  // offsets: one query's, before they join the buffer
         forEachCell(c, [&](std::uint32_t cell) {
+            if (kOffsets && tooFar.load(std::memory_order_relaxed)) return;  // the indices' search follows
             const auto cx = static_cast<int>(cell % static_cast<std::uint32_t>(dims.x));
             const auto cy = static_cast<int>((cell / static_cast<std::uint32_t>(dims.x)) % static_cast<std::uint32_t>(dims.y));
             const auto cz = static_cast<int>(cell / (static_cast<std::uint32_t>(dims.x) * static_cast<std::uint32_t>(dims.y)));
             candidates.gather(grid, positions, {cx, cy, cz});
             for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) {
                 const std::uint32_t i = sorted[k];
-                const std::size_t begin = buffer.size();
-                candidates.appendWithin(positions[i], radius2, i, grid.periodic(), buffer);
-                const std::size_t count = buffer.size() - begin;
+                std::size_t count = 0;
+                if constexpr (kOffsets) {
+                    bool misfit = false;
+                    count = candidates.offsetsWithin(positions[i], radius2, i, grid.periodic(), hits, misfit);
+                    const std::size_t padded = (count + kOffsetBlock - 1) / kOffsetBlock * kOffsetBlock;
+                    std::fill(hits.begin() + static_cast<std::ptrdiff_t>(count), hits.begin() + static_cast<std::ptrdiff_t>(padded),
+                              std::int16_t{0});
+                    reserveGrowing(buffer, buffer.size() + padded);
+                    buffer.insert(buffer.end(), hits.begin(), hits.begin() + static_cast<std::ptrdiff_t>(padded));
+                    if (misfit) tooFar.store(true, std::memory_order_relaxed);
+                } else {
+                    const std::size_t begin = buffer.size();
+                    candidates.appendWithin(positions[i], radius2, i, grid.periodic(), buffer);
+                    count = buffer.size() - begin;
+                }
                 if (count > kCountMask) tooMany.store(true);
                 count_[i] = static_cast<std::uint32_t>(count) & kCountMask;
             }
         });
     }
     throwIfTooMany(tooMany, kCountMask);
-    linkChunks(chunks, threads, [&](int c, auto&& f) {
+    if (tooFar.load()) return false;
+    linkChunks(buffers, data, kOffsets ? static_cast<std::uint32_t>(kOffsetBlock) : 1u, chunks, threads, [&](int c, auto&& f) {
         forEachCell(c, [&](std::uint32_t cell) {
             for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) f(sorted[k]);
         });
     });
+    return true;
 }
 
 void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
@@ -280,9 +341,11 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
         }
     }
     throwIfTooMany(tooMany, kCountMask);
-    linkChunks(chunks, threads, [&](int c, auto&& f) {
+    linkChunks(chunkBuffers_, chunkData_, 1u, chunks, threads, [&](int c, auto&& f) {
         for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) f(i);
     });
+    narrow_ = false;
+    release(offsetBuffers_);
 }
 
 }  // namespace tide

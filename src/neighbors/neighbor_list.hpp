@@ -9,8 +9,16 @@
 /// index); the buffers are the storage, not concatenated into one array, which would hold
 /// every pair twice at the peak (4 bytes a pair, ~140 bytes a fluid particle).
 /// On the periodic axes of the grid's PeriodicBox, distances are to the nearest image.
+///
+/// The lists `build` makes hold each neighbour j of i as the 16-bit offset j − i where every
+/// pair of the build allows it (particles stored in cell order are near their neighbours:
+/// within ±6k on the 50k dam break), each list padded with offset 0 to a whole SIMD block:
+/// ~2.2 bytes a pair instead of 4 (~60 bytes a fluid particle). Otherwise, and in a
+/// CrossNeighborList, 32-bit indices. NeighborSpan reads either.
 
+#include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <span>
 #include <vector>
 
@@ -19,6 +27,64 @@
 #include "neighbors/uniform_grid.hpp"
 
 namespace tide {
+
+/// One particle's neighbours: 32-bit indices, or 16-bit offsets from a base index (the
+/// particle's own), read as indices either way.
+class NeighborSpan {
+public:
+    NeighborSpan() = default;
+    NeighborSpan(const std::uint32_t* index, std::uint32_t count) : index_(index), count_(count) {}
+    NeighborSpan(const std::int16_t* offset, std::uint32_t base, std::uint32_t count)
+        : offset_(offset), base_(base), count_(count) {}
+
+    [[nodiscard]] std::size_t size() const { return count_; }
+    [[nodiscard]] bool empty() const { return count_ == 0; }
+    [[nodiscard]] std::uint32_t operator[](std::size_t k) const {
+        return offset_ != nullptr ? base_ + static_cast<std::uint32_t>(static_cast<std::int32_t>(offset_[k])) : index_[k];
+    }
+    /// The indices (nullptr when offsets), or the offsets and their base (nullptr when indices).
+    [[nodiscard]] const std::uint32_t* indices() const { return index_; }
+    [[nodiscard]] const std::int16_t* offsets() const { return offset_; }
+    [[nodiscard]] std::uint32_t base() const { return base_; }
+
+    class iterator {
+    public:
+        using iterator_category = std::input_iterator_tag;
+        using iterator_concept = std::forward_iterator_tag;
+        using value_type = std::uint32_t;
+        using difference_type = std::ptrdiff_t;
+        iterator() = default;
+        iterator(const NeighborSpan& span, std::size_t k)
+            : index_(span.index_), offset_(span.offset_), base_(span.base_), k_(k) {}
+        std::uint32_t operator*() const {
+            return offset_ != nullptr ? base_ + static_cast<std::uint32_t>(static_cast<std::int32_t>(offset_[k_])) : index_[k_];
+        }
+        iterator& operator++() {
+            ++k_;
+            return *this;
+        }
+        iterator operator++(int) {
+            iterator before = *this;
+            ++k_;
+            return before;
+        }
+        bool operator==(const iterator& other) const { return k_ == other.k_; }
+
+    private:
+        const std::uint32_t* index_ = nullptr;
+        const std::int16_t* offset_ = nullptr;
+        std::uint32_t base_ = 0;
+        std::size_t k_ = 0;
+    };
+    [[nodiscard]] iterator begin() const { return {*this, 0}; }
+    [[nodiscard]] iterator end() const { return {*this, count_}; }
+
+private:
+    const std::uint32_t* index_ = nullptr;
+    const std::int16_t* offset_ = nullptr;
+    std::uint32_t base_ = 0;
+    std::uint32_t count_ = 0;
+};
 
 class NeighborList {
 public:
@@ -33,29 +99,40 @@ public:
     /// grid's periodic axes). The grid must have been built from the same positions with a
     /// cell size ≥ radius.
     void build(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads);
-    /// Find, for every query point i, the points j of another set (the one `grid` was built
-    /// from, at `gridPositions`) with |q_i − x_j|² ≤ radius². With `queryIndices`, the queries
-    /// are queries[queryIndices[a]] and the lists are indexed by a.
-    void buildCross(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
-                    std::span<const glm::vec3> queries, float radius, int threads,
-                    std::span<const std::uint32_t> queryIndices = {});
-
-    /// Every list may be read this many indices past its end (SIMD loops read whole blocks):
-    /// they are indices of the same set, the next lists' or 0 after a chunk's last.
+    /// Every list may be read this many entries past its end (SIMD loops read whole blocks):
+    /// indices of the same set (the next lists' or 0 after a chunk's last).
     static constexpr std::size_t kReadPast = 8;
+    /// Lists of offsets are padded with offset 0 (the particle itself) to a multiple of this:
+    /// the next list's offsets are from another particle, and SIMD loops read whole blocks.
+    static constexpr std::size_t kOffsetBlock = 8;
 
-    [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const {
-        return {chunkData_[count_[i] >> kCountBits] + start_[i], count_[i] & kCountMask};
+    [[nodiscard]] NeighborSpan of(std::uint32_t i) const {
+        const std::uint32_t chunk = count_[i] >> kCountBits, count = count_[i] & kCountMask;
+        if (narrow_) return {chunkOffsets_[chunk] + start_[i], i, count};
+        return {chunkData_[chunk] + start_[i], count};
     }
-    /// Position of i's first neighbour in the list's pair order: per-pair data computed
-    /// alongside the list (e.g. kernel factors) is indexed by offset(i) + k.
+    /// Whether the lists hold 16-bit offsets (NeighborSpan::offsets) rather than indices.
+    [[nodiscard]] bool narrow() const { return narrow_; }
+    /// Position of i's first neighbour in the list's pair slots: per-pair data computed
+    /// alongside the list (e.g. kernel factors) is indexed by offset(i) + k, in an array of
+    /// slotCount() (lists of offsets keep their padding there too).
     [[nodiscard]] std::uint64_t offset(std::uint32_t i) const {
         return chunkBase_[count_[i] >> kCountBits] + start_[i];
     }
     [[nodiscard]] std::uint32_t particleCount() const { return static_cast<std::uint32_t>(count_.size()); }
     [[nodiscard]] std::uint64_t pairCount() const { return pairs_; }
+    [[nodiscard]] std::uint64_t slotCount() const { return slots_; }
 
 private:
+    friend class CrossNeighborList;
+    /// CrossNeighborList::build's lists, as indices.
+    void buildCross(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
+                    std::span<const glm::vec3> queries, float radius, int threads,
+                    std::span<const std::uint32_t> queryIndices);
+    [[nodiscard]] std::span<const std::uint32_t> indicesOf(std::uint32_t i) const {
+        return {chunkData_[count_[i] >> kCountBits] + start_[i], count_[i] & kCountMask};
+    }
+
     /// count_ holds a particle's neighbour count in its low kCountBits bits and the index of
     /// the chunk that found it above; start_ its first neighbour's place in that chunk's
     /// buffer. A particle's list and pair offset come from these and a per-chunk table, with
@@ -66,19 +143,54 @@ private:
     static constexpr int kMaxChunks = 1 << (32 - kCountBits);
 
     /// Once every chunk's buffer is final: sets each particle's start_ in its chunk's buffer
-    /// (its pairs follow those of the particles before it in the chunk), tags its
+    /// (its slots follow those of the particles before it in the chunk), tags its
     /// count with the chunk and records each chunk's first pair offset;
     /// `forEachParticleOfChunk(c, f)` calls f(i) for chunk c's particles in the order they
     /// were found.
-    template <class ForEachParticleOfChunk>
-    void linkChunks(int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk);
+    /// A list of n pairs takes roundUp(n, block) slots.
+    template <class Entry, class ForEachParticleOfChunk>
+    void linkChunks(std::vector<std::vector<Entry>>& buffers, std::vector<const Entry*>& data, std::uint32_t block,
+                    int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk);
+    /// build's search, writing offsets (Entry = int16_t; false if a pair's does not fit) or indices.
+    template <class Entry>
+    bool search(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads,
+                std::vector<std::vector<Entry>>& buffers, std::vector<const Entry*>& data);
 
     std::vector<std::uint32_t> start_;         ///< i's first neighbour's place in its chunk's buffer
     std::vector<std::uint32_t> count_;         ///< neighbours, and the chunk (above kCountBits)
     std::vector<std::uint64_t> chunkBase_;     ///< pair offset of each chunk's first pair
     std::vector<const std::uint32_t*> chunkData_;  ///< each chunk's buffer
-    std::uint64_t pairs_ = 0;
+    std::vector<const std::int16_t*> chunkOffsets_;  ///< each chunk's buffer, when narrow_
+    std::uint64_t pairs_ = 0, slots_ = 0;
+    bool narrow_ = false;
+    /// Builds left before offsets are tried again after a build whose offsets did not fit
+    /// (the failed try costs a search).
+    int wideBuilds_ = 0;
     std::vector<std::vector<std::uint32_t>> chunkBuffers_;  ///< per-chunk lists, capacity kept between builds
+    std::vector<std::vector<std::int16_t>> offsetBuffers_;  ///< the same, as offsets
+};
+
+/// Neighbours in another set (fluid particles' boundary particles, and back), as 32-bit
+/// indices: the same lists in the same form as NeighborList's, with plain spans for the loops.
+class CrossNeighborList {
+public:
+    /// Find, for every query point i, the points j of another set (the one `grid` was built
+    /// from, at `gridPositions`) with |q_i − x_j|² ≤ radius². With `queryIndices`, the queries
+    /// are queries[queryIndices[a]] and the lists are indexed by a.
+    void build(const UniformGrid& grid, std::span<const glm::vec3> gridPositions, std::span<const glm::vec3> queries,
+               float radius, int threads, std::span<const std::uint32_t> queryIndices = {}) {
+        list_.buildCross(grid, gridPositions, queries, radius, threads, queryIndices);
+    }
+
+    static constexpr std::size_t kReadPast = NeighborList::kReadPast;
+    [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const { return list_.indicesOf(i); }
+    [[nodiscard]] std::uint64_t offset(std::uint32_t i) const { return list_.offset(i); }
+    [[nodiscard]] std::uint32_t particleCount() const { return list_.particleCount(); }
+    [[nodiscard]] std::uint64_t pairCount() const { return list_.pairCount(); }
+    [[nodiscard]] std::uint64_t slotCount() const { return list_.slotCount(); }
+
+private:
+    NeighborList list_;
 };
 
 }  // namespace tide

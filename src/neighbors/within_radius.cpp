@@ -46,6 +46,43 @@ std::size_t SelectT(const Candidates& c, const glm::vec3& q, float radius2, std:
     return size;
 }
 
+/// SelectT's test, writing offsets from `base` (the query, which is skipped).
+template <bool Periodic>
+std::size_t SelectOffsetsT(const Candidates& c, const glm::vec3& q, float radius2, std::uint32_t base,
+                           const PeriodicBox& box, std::int16_t* out, bool& misfit) {
+    const D d;
+    const DU du;
+    const hn::RebindToSigned<D> di;
+    const hn::Rebind<std::int16_t, D> d16;
+    const V qx = hn::Set(d, q.x), qy = hn::Set(d, q.y), qz = hn::Set(d, q.z), r2 = hn::Set(d, radius2);
+    const auto skipped = hn::Set(du, base);
+    const auto origin = hn::Set(di, static_cast<std::int32_t>(base));
+    const auto lowest = hn::Set(di, -32768), highest = hn::Set(di, 32767);
+    auto outside = hn::FirstN(di, 0);
+    std::size_t size = 0;
+    for (std::size_t t = 0; t < c.count; t += hn::Lanes(d)) {
+        const V dx = Delta<Periodic>(qx, hn::LoadU(d, c.x + t), box.period.x, box.half.x);
+        const V dy = Delta<Periodic>(qy, hn::LoadU(d, c.y + t), box.period.y, box.half.y);
+        const V dz = Delta<Periodic>(qz, hn::LoadU(d, c.z + t), box.period.z, box.half.z);
+        const auto index = hn::LoadU(du, c.index + t);
+        const V d2 = hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz));  // as SelectT
+        const auto hit = hn::And(hn::RebindMask(du, hn::Le(d2, r2)), hn::Ne(index, skipped));
+        const auto offset = hn::Sub(hn::BitCast(di, index), origin);
+        const auto hitI = hn::RebindMask(di, hit);
+        outside = hn::Or(outside, hn::And(hitI, hn::Or(hn::Lt(offset, lowest), hn::Gt(offset, highest))));
+        hn::StoreU(hn::DemoteTo(d16, hn::Compress(offset, hitI)), d16, out + size);
+        size += hn::CountTrue(du, hit);
+    }
+    if (!hn::AllFalse(di, outside)) misfit = true;
+    return size;
+}
+
+std::size_t SelectOffsetsImpl(const Candidates& candidates, const glm::vec3& q, float radius2, std::uint32_t base,
+                              const PeriodicBox& box, std::int16_t* out, bool& misfit) {
+    return box.any ? SelectOffsetsT<true>(candidates, q, radius2, base, box, out, misfit)
+                   : SelectOffsetsT<false>(candidates, q, radius2, base, box, out, misfit);
+}
+
 std::size_t SelectImpl(const Candidates& candidates, const glm::vec3& q, float radius2, std::uint32_t skip,
                        const PeriodicBox& box, std::uint32_t* out) {
     return box.any ? SelectT<true>(candidates, q, radius2, skip, box, out)
@@ -60,10 +97,16 @@ HWY_AFTER_NAMESPACE();
 namespace tide::within_radius {
 
 HWY_EXPORT(SelectImpl);
+HWY_EXPORT(SelectOffsetsImpl);
 
 std::size_t select(const Candidates& candidates, const glm::vec3& q, float radius2, std::uint32_t skip,
                    const PeriodicBox& box, std::uint32_t* out) {
     return HWY_DYNAMIC_DISPATCH(SelectImpl)(candidates, q, radius2, skip, box, out);
+}
+
+std::size_t selectOffsets(const Candidates& candidates, const glm::vec3& q, float radius2, std::uint32_t base,
+                          const PeriodicBox& box, std::int16_t* out, bool& misfit) {
+    return HWY_DYNAMIC_DISPATCH(SelectOffsetsImpl)(candidates, q, radius2, base, box, out, misfit);
 }
 
 }  // namespace tide::within_radius

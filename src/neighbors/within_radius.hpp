@@ -36,4 +36,10 @@ struct Candidates {
 std::size_t select(const Candidates& candidates, const glm::vec3& q, float radius2, std::uint32_t skip,
                    const PeriodicBox& box, std::uint32_t* out);
 
+/// select, writing the hits' offsets j − base as 16 bits (base < 2^31) to `out` (room for
+/// count + kBlock); returns how many, and sets `misfit` if an offset is outside [−32768, 32767]
+/// (its entry is then clamped).
+std::size_t selectOffsets(const Candidates& candidates, const glm::vec3& q, float radius2, std::uint32_t base,
+                          const PeriodicBox& box, std::int16_t* out, bool& misfit);
+
 }  // namespace tide::within_radius

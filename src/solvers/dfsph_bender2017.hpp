@@ -54,8 +54,7 @@ private:
     void computeAlpha(StepContext& ctx);
     /// i's fluid neighbours with their coded gradient factors, as the SIMD pair sums read them.
     [[nodiscard]] pair_sums::Neighbors fluidPairs(const StepContext& ctx, std::uint32_t i) const {
-        const auto neighbors = ctx.neighbors.of(i);
-        return {neighbors.data(), fluidF_.of(ctx.neighbors, i).data(), neighbors.size()};
+        return pair_sums::Neighbors(ctx.neighbors.of(i), fluidF_.of(ctx.neighbors, i).data());
     }
     /// SIMD lanes for one rest density. With several, the sums keep the scalar loops' order:
     /// the 5:1 column drop of tests/test_multifluid.cpp clumps pairs of light particles at

@@ -30,20 +30,24 @@ class PairKernels {
 public:
     using Code = std::uint16_t;
 
-    /// Room for one value per pair of `list` (the values of the last list are lost), for
+    /// Room for one value per pair slot of `list` (a NeighborList or CrossNeighborList; the
+    /// values of the last list are lost), for
     /// the kernel `w`, and pair_sums::kPadding zeros after them for the SIMD sums (pair_sums.hpp).
-    void resize(const NeighborList& list, const kernels::CubicSpline& w) {
-        resizeScratch(values_, list.pairCount() + pair_sums::kPadding);
+    template <class List>
+    void resize(const List& list, const kernels::CubicSpline& w) {
+        resizeScratch(values_, list.slotCount() + pair_sums::kPadding);
         std::fill(values_.end() - pair_sums::kPadding, values_.end(), Code{0});
         unit_ = -12.0f * w.sigma * w.invH * w.invH;
         invUnit_ = 1.0f / unit_;
     }
 
     /// The codes of i's pairs, aligned with list.of(i).
-    [[nodiscard]] std::span<const Code> of(const NeighborList& list, std::uint32_t i) const {
+    template <class List>
+    [[nodiscard]] std::span<const Code> of(const List& list, std::uint32_t i) const {
         return {values_.data() + list.offset(i), list.of(i).size()};
     }
-    [[nodiscard]] std::span<Code> of(const NeighborList& list, std::uint32_t i) {
+    template <class List>
+    [[nodiscard]] std::span<Code> of(const List& list, std::uint32_t i) {
         return {values_.data() + list.offset(i), list.of(i).size()};
     }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -28,7 +29,7 @@ float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::
                 const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
     float sum = initial;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
-        const glm::vec4 xj = points[neighbors.index[k]];
+        const glm::vec4 xj = points[neighbors.at(k)];
         const glm::vec3 r = delta<Periodic>(xi, xj, box);
         sum += xj.w * w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
     }
@@ -45,14 +46,18 @@ float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, con
                         std::uint16_t* codes, glm::vec4* gradients) {
     float sum = initial;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
-        const glm::vec4 xj = points[neighbors.index[k]];
+        const glm::vec4 xj = points[neighbors.at(k)];
         const glm::vec3 d = delta<Periodic>(xi, xj, box);
         const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
         sum += xj.w * w.value(r);
         codes[k] = factors.encode(w, r);
     }
     if (gradients != nullptr)
-        *gradients = gradientAndSquaresSum<Periodic>({neighbors.index, codes, neighbors.count}, points, xi, box);
+        {
+        Neighbors coded = neighbors;
+        coded.code = codes;
+        *gradients = gradientAndSquaresSum<Periodic>(coded, points, xi, box);
+    }
     return sum;
 }
 
@@ -62,7 +67,7 @@ template <bool Periodic>
 glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, const PeriodicBox& box) {
     float x = 0.0f, y = 0.0f, z = 0.0f;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
-        const glm::vec4 xj = points[neighbors.index[k]];
+        const glm::vec4 xj = points[neighbors.at(k)];
         const glm::vec3 r = delta<Periodic>(xi, xj, box);
         const float s = xj.w * PairKernels::magnitude(neighbors.code[k]);
         x += s * r.x;
@@ -77,7 +82,7 @@ glm::vec4 gradientAndSquaresSum(const Neighbors& neighbors, const glm::vec4* poi
                                 const PeriodicBox& box) {
     float x = 0.0f, y = 0.0f, z = 0.0f, squares = 0.0f;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
-        const glm::vec4 xj = points[neighbors.index[k]];
+        const glm::vec4 xj = points[neighbors.at(k)];
         const glm::vec3 g = (xj.w * PairKernels::magnitude(neighbors.code[k])) * delta<Periodic>(xi, xj, box);
         x += g.x;
         y += g.y;
@@ -92,7 +97,7 @@ float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const g
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     float sum = 0.0f;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
-        const std::uint32_t j = neighbors.index[k];
+        const std::uint32_t j = neighbors.at(k);
         const glm::vec4 xj = points[j];
         sum += (xj.w * PairKernels::magnitude(neighbors.code[k])) * glm::dot(vi - glm::vec3(velocities[j]), delta<Periodic>(xi, xj, box));
     }
@@ -105,7 +110,7 @@ glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const 
                      const PeriodicBox& box) {
     glm::vec3 sum(0.0f);
     for (std::size_t k = 0; k < neighbors.count; ++k) {
-        const std::uint32_t j = neighbors.index[k];
+        const std::uint32_t j = neighbors.at(k);
         const glm::vec3 d = delta<Periodic>(xi, points[j], box);
         const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
         sum += (points[j].w * velocities[j].w * r * w.derivative(r) / (r * r + epsilon)) * (vi - glm::vec3(velocities[j]));
@@ -118,7 +123,7 @@ glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm
                   const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
     glm::vec3 sum(0.0f);
     for (std::size_t k = 0; k < neighbors.count; ++k) {
-        const std::uint32_t j = neighbors.index[k];
+        const std::uint32_t j = neighbors.at(k);
         const glm::vec3 d = delta<Periodic>(xi, points[j], box);
         const float reach = std::max(w.h2 - (d.x * d.x + d.y * d.y + d.z * d.z), 0.0f);
         sum += (2.0f * points[j].w / (vi.w + velocities[j].w) * reach * reach * reach) *
@@ -132,7 +137,7 @@ GradientSums kernelGradientSums(const Neighbors& neighbors, const glm::vec4* poi
                                 const kernels::CubicSpline& w, const PeriodicBox& box) {
     GradientSums sums;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
-        const glm::vec4 xj = points[neighbors.index[k]];
+        const glm::vec4 xj = points[neighbors.at(k)];
         const glm::vec3 r = delta<Periodic>(xi, xj, box);
         const glm::vec3 g = w.gradient(r, std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
         sums.plain += g;
@@ -159,38 +164,38 @@ namespace hn = hwy::HWY_NAMESPACE;
 #if HWY_TARGET == HWY_SCALAR
 // No lanes (GCC before 12.3 compiles Highway's fallback as HWY_SCALAR): the plain loops.
 
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                  const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
     return sequential::kernelSum<Periodic>(neighbors, points, xi, w, box, initial);
 }
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                          const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
                          std::uint16_t* codes, glm::vec4* gradients) {
     return sequential::kernelSumAndCodes<Periodic>(neighbors, points, xi, w, box, initial, factors, codes, gradients);
 }
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, const PeriodicBox& box) {
     return sequential::gradientSum<Periodic>(neighbors, points, xi, box);
 }
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                       const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
                       const PeriodicBox& box) {
     return sequential::viscousSum<Periodic>(neighbors, points, velocities, xi, vi, w, epsilon, box);
 }
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                      const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     return sequential::divergenceSum<Periodic>(neighbors, points, velocities, xi, vi, box);
 }
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
                    const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
     return sequential::xsphSum<Periodic>(neighbors, points, velocities, xi, vi, w, box);
 }
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                                  const kernels::CubicSpline& w, const PeriodicBox& box) {
     return sequential::kernelGradientSums<Periodic>(neighbors, points, xi, w, box);
@@ -293,20 +298,30 @@ HWY_INLINE Columns Transpose(Row row) {
 // clamping each lane's index to the list cost as much as the lanes saved.
 static_assert(NeighborList::kReadPast >= kPadding);
 
-/// (x_j, w_j) of neighbours k … as columns.
+/// (x_j, w_j) of neighbours k … as columns. Offsets come padded to whole blocks with 0 (the
+/// base's own row), indices followed by others of the same set.
+template <bool Offsets>
 HWY_INLINE Columns LoadRows(const glm::vec4* rows, const Neighbors& neighbors, std::size_t k) {
-    const std::uint32_t* index = neighbors.index + k;
-    return Transpose([&](std::size_t l) HWY_ATTR { return &rows[index[l]].x; });
+    if constexpr (Offsets) {
+        const std::int16_t* offset = neighbors.offset + k;
+        const glm::vec4* base = rows + neighbors.base;
+        return Transpose([&](std::size_t l) HWY_ATTR { return &base[offset[l]].x; });
+    } else {
+        const std::uint32_t* index = neighbors.index + k;
+        return Transpose([&](std::size_t l) HWY_ATTR { return &rows[index[l]].x; });
+    }
 }
+static_assert(NeighborList::kOffsetBlock % hn::MaxLanes(D()) == 0);
 
-template <bool Periodic>
+
+template <bool Periodic, bool Offsets>
 float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                  const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z), invH = hn::Set(d, w.invH);
     V sum = hn::Zero(d);
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadRows(points, neighbors, k);
+        const Columns j = LoadRows<Offsets>(points, neighbors, k);
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         const V q = hn::Mul(hn::Sqrt(hn::MulAdd(r.x, r.x, hn::MulAdd(r.y, r.y, hn::Mul(r.z, r.z)))), invH);
         sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), SplineOverSigma(q), sum);
@@ -336,7 +351,7 @@ HWY_INLINE hn::Vec<DU16> EncodeFactors(V r, const kernels::CubicSpline& w, float
     return hn::DemoteTo(du16, hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(x, hn::Set(d, PairKernels::kSmallest))), code));
 }
 
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                          const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
                          std::uint16_t* codes, glm::vec4* gradients) {
@@ -346,7 +361,7 @@ float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, co
     V sum = hn::Zero(d);
     V gx = hn::Zero(d), gy = hn::Zero(d), gz = hn::Zero(d), squares = hn::Zero(d);
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadRows(points, neighbors, k);
+        const Columns j = LoadRows<Offsets>(points, neighbors, k);
         const PairVectors d3 = Delta<Periodic>(xx, xy, xz, j, box);
         // Unfused, as the scalar density pass: the codes below are its codes.
         const V r = hn::Sqrt(hn::Add(hn::Add(hn::Mul(d3.x, d3.x), hn::Mul(d3.y, d3.y)), hn::Mul(d3.z, d3.z)));
@@ -374,13 +389,13 @@ float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, co
     return initial + w.sigma * hn::GetLane(hn::SumOfLanes(d, sum));
 }
 
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, const PeriodicBox& box) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
     V sx = hn::Zero(d), sy = hn::Zero(d), sz = hn::Zero(d);
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadRows(points, neighbors, k);
+        const Columns j = LoadRows<Offsets>(points, neighbors, k);
         const V s = hn::Mul(j.w, LoadMagnitudes(neighbors, k));
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         sx = hn::MulAdd(s, r.x, sx);
@@ -390,7 +405,7 @@ glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, cons
     return {hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)), hn::GetLane(hn::SumOfLanes(d, sz))};
 }
 
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                      const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     const D d;
@@ -398,8 +413,8 @@ float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const 
     const V vx = hn::Set(d, vi.x), vy = hn::Set(d, vi.y), vz = hn::Set(d, vi.z);
     V sum = hn::Zero(d);
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadRows(points, neighbors, k);
-        const Columns v = LoadRows(velocities, neighbors, k);
+        const Columns j = LoadRows<Offsets>(points, neighbors, k);
+        const Columns v = LoadRows<Offsets>(velocities, neighbors, k);
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         const V dot = hn::MulAdd(hn::Sub(vx, v.x), r.x, hn::MulAdd(hn::Sub(vy, v.y), r.y, hn::Mul(hn::Sub(vz, v.z), r.z)));
         sum = hn::MulAdd(hn::Mul(j.w, LoadMagnitudes(neighbors, k)), dot, sum);
@@ -407,7 +422,7 @@ float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const 
     return hn::GetLane(hn::SumOfLanes(d, sum));
 }
 
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                       const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
                       const PeriodicBox& box) {
@@ -418,8 +433,8 @@ glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const
     const V eps = hn::Set(d, epsilon);
     V sx = zero, sy = zero, sz = zero;
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadRows(points, neighbors, k);
-        const Columns v = LoadRows(velocities, neighbors, k);
+        const Columns j = LoadRows<Offsets>(points, neighbors, k);
+        const Columns v = LoadRows<Offsets>(velocities, neighbors, k);
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         const V r2 = hn::Add(hn::Add(hn::Mul(r.x, r.x), hn::Mul(r.y, r.y)), hn::Mul(r.z, r.z));
         const V q = hn::Mul(hn::Sqrt(r2), invH);
@@ -436,7 +451,7 @@ glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const
                              hn::GetLane(hn::SumOfLanes(d, sz)));
 }
 
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
                    const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
     const D d;
@@ -445,8 +460,8 @@ glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const gl
     const V h2 = hn::Set(d, w.h2), two = hn::Set(d, 2.0f), zero = hn::Zero(d);
     V sx = zero, sy = zero, sz = zero;
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadRows(points, neighbors, k);
-        const Columns v = LoadRows(velocities, neighbors, k);
+        const Columns j = LoadRows<Offsets>(points, neighbors, k);
+        const Columns v = LoadRows<Offsets>(velocities, neighbors, k);
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         const V reach = hn::Max(hn::Sub(h2, hn::MulAdd(r.x, r.x, hn::MulAdd(r.y, r.y, hn::Mul(r.z, r.z)))), zero);
         // masked last: the lanes past the list's end may divide by anything
@@ -459,7 +474,7 @@ glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const gl
     return {hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)), hn::GetLane(hn::SumOfLanes(d, sz))};
 }
 
-template <bool Periodic>
+template <bool Periodic, bool Offsets>
 GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                                  const kernels::CubicSpline& w, const PeriodicBox& box) {
     const D d;
@@ -467,7 +482,7 @@ GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* po
     const V zero = hn::Zero(d);
     V px = zero, py = zero, pz = zero, wx = zero, wy = zero, wz = zero;
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
-        const Columns j = LoadRows(points, neighbors, k);
+        const Columns j = LoadRows<Offsets>(points, neighbors, k);
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         const V length = hn::Sqrt(hn::MulAdd(r.x, r.x, hn::MulAdd(r.y, r.y, hn::Mul(r.z, r.z))));
         // W'(r)/r h/σ = (24(½ − q)₊² − 6(1 − q)₊²)/r, the σ/h outside the sums; 0 at r = 0 and past the list
@@ -489,41 +504,58 @@ GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* po
 
 #endif  // HWY_TARGET == HWY_SCALAR
 
+/// Calls f(periodic, offsets) with the box's and the list's form as compile-time constants.
+template <class F>
+HWY_INLINE auto Choose(const PeriodicBox& box, const Neighbors& neighbors, F&& f) {
+    using Yes = std::true_type;
+    using No = std::false_type;
+    if (neighbors.offset != nullptr) return box.any ? f(Yes{}, Yes{}) : f(No{}, Yes{});
+    return box.any ? f(Yes{}, No{}) : f(No{}, No{});
+}
+
 float KernelSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                     const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
-    return box.any ? KernelSumT<true>(neighbors, points, xi, w, box, initial)
-                   : KernelSumT<false>(neighbors, points, xi, w, box, initial);
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        return KernelSumT<periodic(), offsets()>(neighbors, points, xi, w, box, initial);
+    });
 }
 float KernelSumAndCodesImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                             const kernels::CubicSpline& w, const PeriodicBox& box, float initial,
                             const PairKernels& factors, std::uint16_t* codes, glm::vec4* gradients) {
-    return box.any ? KernelSumAndCodesT<true>(neighbors, points, xi, w, box, initial, factors, codes, gradients)
-                   : KernelSumAndCodesT<false>(neighbors, points, xi, w, box, initial, factors, codes, gradients);
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        return KernelSumAndCodesT<periodic(), offsets()>(neighbors, points, xi, w, box, initial, factors, codes, gradients);
+    });
 }
 glm::vec3 GradientSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                           const PeriodicBox& box) {
-    return box.any ? GradientSumT<true>(neighbors, points, xi, box) : GradientSumT<false>(neighbors, points, xi, box);
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        return GradientSumT<periodic(), offsets()>(neighbors, points, xi, box);
+    });
 }
 float DivergenceSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                         const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
-    return box.any ? DivergenceSumT<true>(neighbors, points, velocities, xi, vi, box)
-                   : DivergenceSumT<false>(neighbors, points, velocities, xi, vi, box);
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        return DivergenceSumT<periodic(), offsets()>(neighbors, points, velocities, xi, vi, box);
+    });
 }
 glm::vec3 ViscousSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                          const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
                          const PeriodicBox& box) {
-    return box.any ? ViscousSumT<true>(neighbors, points, velocities, xi, vi, w, epsilon, box)
-                   : ViscousSumT<false>(neighbors, points, velocities, xi, vi, w, epsilon, box);
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        return ViscousSumT<periodic(), offsets()>(neighbors, points, velocities, xi, vi, w, epsilon, box);
+    });
 }
 glm::vec3 XsphSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                       const glm::vec3& xi, const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
-    return box.any ? XsphSumT<true>(neighbors, points, velocities, xi, vi, w, box)
-                   : XsphSumT<false>(neighbors, points, velocities, xi, vi, w, box);
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        return XsphSumT<periodic(), offsets()>(neighbors, points, velocities, xi, vi, w, box);
+    });
 }
 GradientSums KernelGradientSumsImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
                                     const kernels::CubicSpline& w, const PeriodicBox& box) {
-    return box.any ? KernelGradientSumsT<true>(neighbors, points, xi, w, box)
-                   : KernelGradientSumsT<false>(neighbors, points, xi, w, box);
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        return KernelGradientSumsT<periodic(), offsets()>(neighbors, points, xi, w, box);
+    });
 }
 const char* InstructionSetImpl() { return hwy::TargetName(HWY_TARGET); }
 

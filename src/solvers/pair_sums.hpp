@@ -17,6 +17,7 @@
 
 #include "core/kernels.hpp"
 #include "core/periodic_box.hpp"
+#include "neighbors/neighbor_list.hpp"
 
 namespace tide {
 class PairKernels;
@@ -28,13 +29,23 @@ namespace tide::pair_sums {
 /// PairKernels leave that much room after their last list.
 inline constexpr std::size_t kPadding = 8;
 
-/// One particle's neighbours: indices into the loaded arrays and, where a sum needs them,
-/// the pairs' coded gradient factors (PairKernels::Code, aligned with the indices), both
-/// readable kPadding past the end.
+/// One particle's neighbours: indices into the loaded arrays, readable kPadding past the end,
+/// or offsets from `base` (NeighborSpan), padded with 0 to a multiple of
+/// NeighborList::kOffsetBlock; and, where a sum needs them, the pairs' coded gradient factors
+/// (PairKernels::Code, aligned with the indices), readable as far.
 struct Neighbors {
     const std::uint32_t* index = nullptr;
     const std::uint16_t* code = nullptr;
     std::size_t count = 0;
+    const std::int16_t* offset = nullptr;  ///< instead of index: neighbour k is base + offset[k]
+    std::uint32_t base = 0;
+
+    Neighbors() = default;
+    explicit Neighbors(const NeighborSpan& list, const std::uint16_t* codes = nullptr)
+        : index(list.indices()), code(codes), count(list.size()), offset(list.offsets()), base(list.base()) {}
+    [[nodiscard]] std::uint32_t at(std::size_t k) const {
+        return offset != nullptr ? base + static_cast<std::uint32_t>(static_cast<std::int32_t>(offset[k])) : index[k];
+    }
 };
 
 /// How a sum adds its terms.

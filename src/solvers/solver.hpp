@@ -33,10 +33,10 @@ struct StepContext {
     float particleSpacing;   ///< m
     float soundSpeed;        ///< c, m/s
     const BoundaryParticles& boundary;      ///< static walls (may be empty)
-    const NeighborList& boundaryNeighbors;  ///< boundary particles near each fluid particle
+    const CrossNeighborList& boundaryNeighbors;  ///< boundary particles near each fluid particle
     /// Fluid particles near each boundary particle near fluid: its list a is boundary
     /// particle boundaryNearFluid[a]'s (built only for solvers that use the wall pressure).
-    const NeighborList& boundaryFluidNeighbors;
+    const CrossNeighborList& boundaryFluidNeighbors;
     std::span<const std::uint32_t> boundaryNearFluid;  ///< boundary particles within h of fluid, ascending
     PeriodicBox periodic;    ///< the domain's periodic axes
     ViscosityModel viscosity;  ///< SolverDef::viscosity resolved (the solver's own when not named)

@@ -42,7 +42,7 @@ inline void computeDensities(StepContext& ctx, const glm::vec4* positionMass = n
         float rho = 0.0f;
         const auto neighbors = ctx.neighbors.of(i);
         if (positionMass != nullptr) {
-            rho = pair_sums::kernelSum({neighbors.data(), nullptr, neighbors.size()}, positionMass, xi, w, ctx.periodic,
+            rho = pair_sums::kernelSum(pair_sums::Neighbors(neighbors), positionMass, xi, w, ctx.periodic,
                                        p.mass[i] * self);
         } else {
             float number = self;

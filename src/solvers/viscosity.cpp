@@ -102,7 +102,7 @@ void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
         glm::vec3 sum(0.0f);
         if (lanes) {
             const auto neighbors = ctx.neighbors.of(i);
-            sum = (2.0f * mui) * pair_sums::viscousSum({neighbors.data(), nullptr, neighbors.size()}, ctx.positionMassRows,
+            sum = (2.0f * mui) * pair_sums::viscousSum(pair_sums::Neighbors(neighbors), ctx.positionMassRows,
                                                        ctx.velocityRows, xi, vi, w, 0.01f * h2, ctx.periodic);
         } else {
             for (const std::uint32_t j : ctx.neighbors.of(i)) {

@@ -60,7 +60,7 @@ double WcsphBecker2007::step(StepContext& ctx) {
         const auto neighbors = ctx.neighbors.of(i);
         if (lanes) {  // pi Σ_j ∇W_ij + Σ_j (m p_j/ρ_j²) ∇W_ij
             const pair_sums::GradientSums sums =
-                pair_sums::kernelGradientSums({neighbors.data(), nullptr, neighbors.size()}, rows_.data(), xi, w, ctx.periodic);
+                pair_sums::kernelGradientSums(pair_sums::Neighbors(neighbors), rows_.data(), xi, w, ctx.periodic);
             sum = pi * sums.plain + sums.weighted;
         } else {
             for (const std::uint32_t j : neighbors) {

@@ -39,7 +39,7 @@ public:
             const float scale = epsilon * poly6.norm;
             parallelFor(p.size(), threads, [&](std::uint32_t i) {
                 const auto list = neighbors.of(i);
-                const glm::vec3 sum = pair_sums::xsphSum({list.data(), nullptr, list.size()}, positionMass, scratch.data(),
+                const glm::vec3 sum = pair_sums::xsphSum(pair_sums::Neighbors(list), positionMass, scratch.data(),
                                                          p.position[i], scratch[i], poly6, box);
                 p.velocity[i] = glm::vec3(scratch[i]) + scale * sum;
             });
