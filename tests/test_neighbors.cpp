@@ -160,8 +160,8 @@ TEST(Neighbors, CrossListsOfQueriesInCellOrderKeepTheGridsOrder) {
     }
 }
 
-// Lists of neighbours near in storage hold 16-bit offsets; a pair farther apart than an
-// offset reaches makes the build keep 32-bit indices, with the same lists.
+// Lists of neighbours near in storage hold 16-bit offsets; a list with a neighbour farther
+// than an offset reaches keeps 32-bit indices, the others still offsets.
 TEST(Neighbors, ListsKeepIndicesWhereOffsetsDoNotReach) {
     const float h = 0.25f;
     const auto near = testPoints(h);
@@ -169,7 +169,7 @@ TEST(Neighbors, ListsKeepIndicesWhereOffsetsDoNotReach) {
     grid.build(near, h, 2);
     NeighborList list;
     list.build(grid, near, h, 2);
-    EXPECT_TRUE(list.narrow());
+    for (std::uint32_t i = 0; i < near.size(); ++i) ASSERT_NE(list.of(i).offsets(), nullptr) << "particle " << i;
     // 40,000 points a metre apart, but the first and the last 0.1 m apart: 39,999 indices.
     std::vector<glm::vec3> far;
     for (int i = 0; i < 40000; ++i) far.emplace_back(2.0f + static_cast<float>(i % 34), static_cast<float>(i / 34 % 34), static_cast<float>(i / 1156));
@@ -179,13 +179,17 @@ TEST(Neighbors, ListsKeepIndicesWhereOffsetsDoNotReach) {
     grid.build(far, h, 2);
     for (int threads : {1, 2}) {
         list.build(grid, far, h, threads);
-        EXPECT_FALSE(list.narrow());
         EXPECT_EQ(list.pairCount(), 6u);
         for (const std::uint32_t i : {0u, 1u, 39999u, 2u, 20000u}) {
             auto found = std::vector<std::uint32_t>(list.of(i).begin(), list.of(i).end());
             std::sort(found.begin(), found.end());
             ASSERT_EQ(found, bruteForce(far, i, h)) << "particle " << i;
+            const bool reachesFar = i == 0 || i == 1 || i == 39999;
+            EXPECT_EQ(list.of(i).indices() != nullptr, reachesFar) << "particle " << i;
         }
+        std::vector<int> covered(list.slotCount(), 0);  // the indices' slots follow the offsets'
+        for (const std::uint32_t i : {0u, 1u, 39999u})
+            for (std::uint64_t k = 0; k < list.of(i).size(); ++k) ASSERT_EQ(++covered.at(list.offset(i) + k), 1);
     }
     // And the set that fits, with the same list after the misfit: the same lists as a fresh one.
     grid.build(near, h, 2);

@@ -6,7 +6,6 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
-#include <type_traits>
 
 #include <glm/common.hpp>
 
@@ -100,15 +99,6 @@ void clearWithRoom(std::vector<Entry>& buffer) {
     }
 }
 
-/// Frees every chunk's buffer (the lists of the other width).
-template <class Entry>
-void release(std::vector<std::vector<Entry>>& buffers) {
-    std::vector<std::vector<Entry>>().swap(buffers);
-}
-
-/// Builds that keep 32-bit indices after offsets did not fit, before offsets are tried again.
-constexpr int kWideBuildsAfterMisfit = 50;
-
 /// Chunks of a list build per thread, taken dynamically: the work per query is uneven (the wall
 /// shell lists its floor first, and most of the rest is far from the fluid), and one static
 /// chunk per thread left one thread idle. Measured on the 50k dam break, 2 threads, 0.5 s
@@ -118,31 +108,44 @@ constexpr int kChunksPerThread = 8;
 
 }  // namespace
 
-template <class Entry, class ForEachParticleOfChunk>
-void NeighborList::linkChunks(std::vector<std::vector<Entry>>& buffers, std::vector<const Entry*>& data,
-                              std::uint32_t block, int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk) {
+template <class ForEachParticleOfChunk>
+void NeighborList::linkChunks(int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk) {
     chunkBase_.assign(static_cast<std::size_t>(chunks) + 1, 0);
-    data.resize(static_cast<std::size_t>(chunks));
+    chunkOffsetSlots_.resize(static_cast<std::size_t>(chunks));
+    chunkData_.resize(static_cast<std::size_t>(chunks));
+    chunkOffsets_.resize(static_cast<std::size_t>(chunks));
     for (int c = 0; c < chunks; ++c) {
-        std::vector<Entry>& buffer = buffers[static_cast<std::size_t>(c)];
+        std::vector<std::int16_t>& offsets = offsetBuffers_[static_cast<std::size_t>(c)];
+        std::vector<std::uint32_t>& indices = chunkBuffers_[static_cast<std::size_t>(c)];
         // start_ is 32-bit: a chunk of 2^32 pairs (8–16 GiB of lists) would need more.
-        if (buffer.size() > std::numeric_limits<std::uint32_t>::max())
+        if (offsets.size() > std::numeric_limits<std::uint32_t>::max() || indices.size() > std::numeric_limits<std::uint32_t>::max())
             throw std::length_error("NeighborList: more than 2^32 pairs in one chunk");
-        chunkBase_[c + 1] = chunkBase_[c] + buffer.size();
-        reserveGrowing(buffer, buffer.size() + kReadPast);
-        buffer.resize(buffer.size() + kReadPast, Entry{0});  // not pairs: room to read past the last list
-        data[static_cast<std::size_t>(c)] = buffer.data();
+        chunkOffsetSlots_[c] = offsets.size();
+        chunkBase_[c + 1] = chunkBase_[c] + offsets.size() + indices.size();
+        // not pairs: room to read past the last list
+        reserveGrowing(offsets, offsets.size() + kReadPast);
+        offsets.resize(offsets.size() + kReadPast, std::int16_t{0});
+        reserveGrowing(indices, indices.size() + kReadPast);
+        indices.resize(indices.size() + kReadPast, 0u);
+        chunkOffsets_[static_cast<std::size_t>(c)] = offsets.data();
+        chunkData_[static_cast<std::size_t>(c)] = indices.data();
     }
     slots_ = chunkBase_[chunks];
     std::uint64_t pairs = 0;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads) reduction(+ : pairs)
     for (int c = 0; c < chunks; ++c) {
-        std::uint32_t next = 0;
-        const std::uint32_t tag = static_cast<std::uint32_t>(c) << kCountBits;
+        std::uint32_t nextOffset = 0, nextIndex = 0;
+        const std::uint32_t tag = static_cast<std::uint32_t>(c) << kChunkShift;
         forEachParticleOfChunk(c, [&](std::uint32_t i) {
-            start_[i] = next;
-            next += (count_[i] + block - 1) / block * block;
-            pairs += count_[i];
+            const std::uint32_t count = count_[i] & kCountMask;
+            if (count_[i] & kWide) {
+                start_[i] = nextIndex;
+                nextIndex += count;
+            } else {
+                start_[i] = nextOffset;
+                nextOffset += static_cast<std::uint32_t>((count + kOffsetBlock - 1) / kOffsetBlock * kOffsetBlock);
+            }
+            pairs += count;
             count_[i] |= tag;
         });
     }
@@ -160,30 +163,11 @@ void throwIfTooMany(const std::atomic<bool>& tooMany, std::uint32_t limit) {
 
 void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads) {
     const auto n = static_cast<std::uint32_t>(positions.size());
+    const float radius2 = radius * radius;
     start_.resize(n);
     count_.resize(n);
-    // Offsets are computed in 32 bits.
-    if (wideBuilds_ == 0 && n <= static_cast<std::uint32_t>(std::numeric_limits<std::int32_t>::max())) {
-        if (search(grid, positions, radius, threads, offsetBuffers_, chunkOffsets_)) {
-            narrow_ = true;
-            release(chunkBuffers_);
-            return;
-        }
-        release(offsetBuffers_);  // before the indices take their place: not both at the peak
-        wideBuilds_ = kWideBuildsAfterMisfit;
-    } else {
-        --wideBuilds_;
-    }
-    search(grid, positions, radius, threads, chunkBuffers_, chunkData_);
-    narrow_ = false;
-}
-
-template <class Entry>
-bool NeighborList::search(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads,
-                          std::vector<std::vector<Entry>>& buffers, std::vector<const Entry*>& data) {
-    constexpr bool kOffsets = std::is_same_v<Entry, std::int16_t>;
-    const auto n = static_cast<std::uint32_t>(positions.size());
-    const float radius2 = radius * radius;
+    // Offsets are found in 32-bit lanes.
+    const bool offsets = n <= static_cast<std::uint32_t>(std::numeric_limits<std::int32_t>::max());
     // Cells are split into contiguous ranges, balanced by particle count.
     const int chunks = n >= kParallelGrain ? std::min(threads * kChunksPerThread, kMaxChunks) : 1;
     const std::uint32_t cells = grid.cellCount();
@@ -197,56 +181,58 @@ bool NeighborList::search(const UniformGrid& grid, std::span<const glm::vec3> po
         }
         firstCell[c] = c == 0 ? 0 : lo;
     }
-    buffers.resize(static_cast<std::size_t>(chunks));
+    offsetBuffers_.resize(static_cast<std::size_t>(chunks));
+    chunkBuffers_.resize(static_cast<std::size_t>(chunks));
     const auto sorted = grid.sortedParticles();
     const glm::ivec3 dims = grid.dims();
     auto forEachCell = [&](int c, auto&& f) {
         for (std::uint32_t cell = firstCell[c]; cell < firstCell[c + 1]; ++cell)
             if (grid.cellStart(cell) < grid.cellStart(cell + 1)) f(cell);
     };
-    std::atomic<bool> tooMany{false}, tooFar{false};
+    std::atomic<bool> tooMany{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
-        std::vector<Entry>& buffer = buffers[static_cast<std::size_t>(c)];
-        clearWithRoom(buffer);
+        std::vector<std::int16_t>& offsetBuffer = offsetBuffers_[static_cast<std::size_t>(c)];
+        std::vector<std::uint32_t>& indexBuffer = chunkBuffers_[static_cast<std::size_t>(c)];
+        clearWithRoom(offsetBuffer);
+        clearWithRoom(indexBuffer);
         CandidateSet candidates;
-        std::vector<std::int16_t> hits;  // offsets: one query's, before they join the buffer
+        std::vector<std::int16_t> hits;  // one query's offsets, before they join the buffer
         forEachCell(c, [&](std::uint32_t cell) {
-            if (kOffsets && tooFar.load(std::memory_order_relaxed)) return;  // the indices' search follows
             const auto cx = static_cast<int>(cell % static_cast<std::uint32_t>(dims.x));
             const auto cy = static_cast<int>((cell / static_cast<std::uint32_t>(dims.x)) % static_cast<std::uint32_t>(dims.y));
             const auto cz = static_cast<int>(cell / (static_cast<std::uint32_t>(dims.x) * static_cast<std::uint32_t>(dims.y)));
             candidates.gather(grid, positions, {cx, cy, cz});
             for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) {
                 const std::uint32_t i = sorted[k];
+                bool wide = !offsets;
                 std::size_t count = 0;
-                if constexpr (kOffsets) {
-                    bool misfit = false;
-                    count = candidates.offsetsWithin(positions[i], radius2, i, grid.periodic(), hits, misfit);
-                    const std::size_t padded = (count + kOffsetBlock - 1) / kOffsetBlock * kOffsetBlock;
-                    std::fill(hits.begin() + static_cast<std::ptrdiff_t>(count), hits.begin() + static_cast<std::ptrdiff_t>(padded),
-                              std::int16_t{0});
-                    reserveGrowing(buffer, buffer.size() + padded);
-                    buffer.insert(buffer.end(), hits.begin(), hits.begin() + static_cast<std::ptrdiff_t>(padded));
-                    if (misfit) tooFar.store(true, std::memory_order_relaxed);
-                } else {
-                    const std::size_t begin = buffer.size();
-                    candidates.appendWithin(positions[i], radius2, i, grid.periodic(), buffer);
-                    count = buffer.size() - begin;
+                if (offsets) {
+                    count = candidates.offsetsWithin(positions[i], radius2, i, grid.periodic(), hits, wide);
+                    if (!wide) {
+                        const std::size_t padded = (count + kOffsetBlock - 1) / kOffsetBlock * kOffsetBlock;
+                        std::fill(hits.begin() + static_cast<std::ptrdiff_t>(count),
+                                  hits.begin() + static_cast<std::ptrdiff_t>(padded), std::int16_t{0});
+                        reserveGrowing(offsetBuffer, offsetBuffer.size() + padded);
+                        offsetBuffer.insert(offsetBuffer.end(), hits.begin(), hits.begin() + static_cast<std::ptrdiff_t>(padded));
+                    }
+                }
+                if (wide) {  // a neighbour beyond an offset's reach: the same list as indices
+                    const std::size_t begin = indexBuffer.size();
+                    candidates.appendWithin(positions[i], radius2, i, grid.periodic(), indexBuffer);
+                    count = indexBuffer.size() - begin;
                 }
                 if (count > kCountMask) tooMany.store(true);
-                count_[i] = static_cast<std::uint32_t>(count) & kCountMask;
+                count_[i] = (static_cast<std::uint32_t>(count) & kCountMask) | (wide ? kWide : 0u);
             }
         });
     }
     throwIfTooMany(tooMany, kCountMask);
-    if (tooFar.load()) return false;
-    linkChunks(buffers, data, kOffsets ? static_cast<std::uint32_t>(kOffsetBlock) : 1u, chunks, threads, [&](int c, auto&& f) {
+    linkChunks(chunks, threads, [&](int c, auto&& f) {
         forEachCell(c, [&](std::uint32_t cell) {
             for (std::uint32_t k = grid.cellStart(cell); k < grid.cellStart(cell + 1); ++k) f(sorted[k]);
         });
     });
-    return true;
 }
 
 void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3> gridPositions,
@@ -259,6 +245,8 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
     count_.resize(n);
     const int chunks = n >= kParallelGrain ? std::min(threads * kChunksPerThread, kMaxChunks) : 1;
     chunkBuffers_.resize(static_cast<std::size_t>(chunks));
+    offsetBuffers_.resize(static_cast<std::size_t>(chunks));
+    for (auto& unused : offsetBuffers_) unused.clear();
     auto chunkBegin = [&](int c) { return static_cast<std::uint32_t>(std::uint64_t{n} * c / chunks); };
     const auto sorted = grid.sortedParticles();
     // Queries farther than the radius from the grid's box have no neighbours (and would
@@ -293,7 +281,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
         auto finish = [&](std::uint32_t i, std::size_t begin) {
             const std::size_t count = buffer.size() - begin;
             if (count > kCountMask) tooMany.store(true);
-            count_[i] = static_cast<std::uint32_t>(count) & kCountMask;
+            count_[i] = (static_cast<std::uint32_t>(count) & kCountMask) | kWide;
         };
         if (box.any) {
             for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) {
@@ -341,11 +329,9 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
         }
     }
     throwIfTooMany(tooMany, kCountMask);
-    linkChunks(chunkBuffers_, chunkData_, 1u, chunks, threads, [&](int c, auto&& f) {
+    linkChunks(chunks, threads, [&](int c, auto&& f) {
         for (std::uint32_t i = chunkBegin(c); i < chunkBegin(c + 1); ++i) f(i);
     });
-    narrow_ = false;
-    release(offsetBuffers_);
 }
 
 }  // namespace tide

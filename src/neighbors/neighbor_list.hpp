@@ -10,11 +10,13 @@
 /// every pair twice at the peak (4 bytes a pair, ~140 bytes a fluid particle).
 /// On the periodic axes of the grid's PeriodicBox, distances are to the nearest image.
 ///
-/// The lists `build` makes hold each neighbour j of i as the 16-bit offset j − i where every
-/// pair of the build allows it (particles stored in cell order are near their neighbours:
-/// within ±6k on the 50k dam break), each list padded with offset 0 to a whole SIMD block:
-/// ~2.2 bytes a pair instead of 4 (~60 bytes a fluid particle). Otherwise, and in a
-/// CrossNeighborList, 32-bit indices. NeighborSpan reads either.
+/// The lists `build` makes hold each neighbour j of i as the 16-bit offset j − i where all of
+/// i's fit (particles stored in cell order are near their neighbours: within ±6k on the 50k
+/// dam break), each list padded with offset 0 to a whole SIMD block: ~2.2 bytes a pair
+/// instead of 4 (~60 bytes a fluid particle). A list with a neighbour farther in storage
+/// (across a slab of cells holding more than 32k particles: a few dozen of the 205k dam
+/// break's lists late in its second) keeps 32-bit indices, as every CrossNeighborList does.
+/// NeighborSpan reads either.
 
 #include <cstddef>
 #include <cstdint>
@@ -107,17 +109,16 @@ public:
     static constexpr std::size_t kOffsetBlock = 8;
 
     [[nodiscard]] NeighborSpan of(std::uint32_t i) const {
-        const std::uint32_t chunk = count_[i] >> kCountBits, count = count_[i] & kCountMask;
-        if (narrow_) return {chunkOffsets_[chunk] + start_[i], i, count};
-        return {chunkData_[chunk] + start_[i], count};
+        const std::uint32_t chunk = count_[i] >> kChunkShift, count = count_[i] & kCountMask;
+        if (count_[i] & kWide) return {chunkData_[chunk] + start_[i], count};
+        return {chunkOffsets_[chunk] + start_[i], i, count};
     }
-    /// Whether the lists hold 16-bit offsets (NeighborSpan::offsets) rather than indices.
-    [[nodiscard]] bool narrow() const { return narrow_; }
     /// Position of i's first neighbour in the list's pair slots: per-pair data computed
     /// alongside the list (e.g. kernel factors) is indexed by offset(i) + k, in an array of
     /// slotCount() (lists of offsets keep their padding there too).
     [[nodiscard]] std::uint64_t offset(std::uint32_t i) const {
-        return chunkBase_[count_[i] >> kCountBits] + start_[i];
+        const std::uint32_t chunk = count_[i] >> kChunkShift;
+        return chunkBase_[chunk] + start_[i] + ((count_[i] & kWide) ? chunkOffsetSlots_[chunk] : 0);
     }
     [[nodiscard]] std::uint32_t particleCount() const { return static_cast<std::uint32_t>(count_.size()); }
     [[nodiscard]] std::uint64_t pairCount() const { return pairs_; }
@@ -130,44 +131,38 @@ private:
                     std::span<const glm::vec3> queries, float radius, int threads,
                     std::span<const std::uint32_t> queryIndices);
     [[nodiscard]] std::span<const std::uint32_t> indicesOf(std::uint32_t i) const {
-        return {chunkData_[count_[i] >> kCountBits] + start_[i], count_[i] & kCountMask};
+        return {chunkData_[count_[i] >> kChunkShift] + start_[i], count_[i] & kCountMask};
     }
 
-    /// count_ holds a particle's neighbour count in its low kCountBits bits and the index of
-    /// the chunk that found it above; start_ its first neighbour's place in that chunk's
-    /// buffer. A particle's list and pair offset come from these and a per-chunk table, with
-    /// 8 bytes a particle per list instead of 20 for a pointer and a 64-bit offset (~40 bytes
-    /// a fluid particle at 205k across the fluid and wall lists).
-    static constexpr unsigned kCountBits = 20;
+    /// count_ holds a particle's neighbour count in its low kCountBits bits, kWide if its list
+    /// holds indices, and the index of the chunk that found it from kChunkShift up; start_ its
+    /// first neighbour's place in that chunk's buffer of offsets or of indices. A particle's
+    /// list and pair offset come from these and a per-chunk table, with 8 bytes a particle per
+    /// list instead of 20 for a pointer and a 64-bit offset (~40 bytes a fluid particle at
+    /// 205k across the fluid and wall lists).
+    static constexpr unsigned kCountBits = 19;
     static constexpr std::uint32_t kCountMask = (1u << kCountBits) - 1u;
-    static constexpr int kMaxChunks = 1 << (32 - kCountBits);
+    static constexpr std::uint32_t kWide = 1u << kCountBits;
+    static constexpr unsigned kChunkShift = kCountBits + 1;
+    static constexpr int kMaxChunks = 1 << (32 - kChunkShift);
 
-    /// Once every chunk's buffer is final: sets each particle's start_ in its chunk's buffer
-    /// (its slots follow those of the particles before it in the chunk), tags its
-    /// count with the chunk and records each chunk's first pair offset;
-    /// `forEachParticleOfChunk(c, f)` calls f(i) for chunk c's particles in the order they
-    /// were found.
-    /// A list of n pairs takes roundUp(n, block) slots.
-    template <class Entry, class ForEachParticleOfChunk>
-    void linkChunks(std::vector<std::vector<Entry>>& buffers, std::vector<const Entry*>& data, std::uint32_t block,
-                    int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk);
-    /// build's search, writing offsets (Entry = int16_t; false if a pair's does not fit) or indices.
-    template <class Entry>
-    bool search(const UniformGrid& grid, std::span<const glm::vec3> positions, float radius, int threads,
-                std::vector<std::vector<Entry>>& buffers, std::vector<const Entry*>& data);
+    /// Once every chunk's buffers are final: sets each particle's start_ in its chunk's buffer
+    /// (its slots follow those of the particles before it in the chunk: a list of offsets
+    /// takes its count rounded up to kOffsetBlock), tags its count with the chunk and records
+    /// each chunk's first slot (its offsets', then its indices'); `forEachParticleOfChunk(c, f)`
+    /// calls f(i) for chunk c's particles in the order they were found.
+    template <class ForEachParticleOfChunk>
+    void linkChunks(int chunks, int threads, ForEachParticleOfChunk&& forEachParticleOfChunk);
 
     std::vector<std::uint32_t> start_;         ///< i's first neighbour's place in its chunk's buffer
-    std::vector<std::uint32_t> count_;         ///< neighbours, and the chunk (above kCountBits)
-    std::vector<std::uint64_t> chunkBase_;     ///< pair offset of each chunk's first pair
-    std::vector<const std::uint32_t*> chunkData_;  ///< each chunk's buffer
-    std::vector<const std::int16_t*> chunkOffsets_;  ///< each chunk's buffer, when narrow_
+    std::vector<std::uint32_t> count_;         ///< neighbours, kWide, and the chunk (from kChunkShift)
+    std::vector<std::uint64_t> chunkBase_;     ///< slot of each chunk's first pair
+    std::vector<std::uint64_t> chunkOffsetSlots_;  ///< slots of each chunk's lists of offsets
+    std::vector<const std::uint32_t*> chunkData_;  ///< each chunk's buffer of indices
+    std::vector<const std::int16_t*> chunkOffsets_;  ///< each chunk's buffer of offsets
     std::uint64_t pairs_ = 0, slots_ = 0;
-    bool narrow_ = false;
-    /// Builds left before offsets are tried again after a build whose offsets did not fit
-    /// (the failed try costs a search).
-    int wideBuilds_ = 0;
-    std::vector<std::vector<std::uint32_t>> chunkBuffers_;  ///< per-chunk lists, capacity kept between builds
-    std::vector<std::vector<std::int16_t>> offsetBuffers_;  ///< the same, as offsets
+    std::vector<std::vector<std::uint32_t>> chunkBuffers_;  ///< per-chunk lists of indices, capacity kept between builds
+    std::vector<std::vector<std::int16_t>> offsetBuffers_;  ///< per-chunk lists of offsets, the same
 };
 
 /// Neighbours in another set (fluid particles' boundary particles, and back), as 32-bit
