@@ -23,15 +23,24 @@ HWY_INLINE V Delta(V q, V x, float period, float half) {
     return tide::HWY_NAMESPACE::NearestImageDelta<Periodic>(q, x, period, half);
 }
 
+/// The query's test against candidates t …: their indices, and which of them are within
+/// reach and not `skip`.
+struct Block {
+    hn::Vec<DU> index;
+    hn::Mask<DU> hit;
+};
 template <bool Periodic>
-std::size_t SelectT(const Candidates& c, const glm::vec3& q, float radius2, std::uint32_t skip, const PeriodicBox& box,
-                    std::uint32_t* out) {
-    const D d;
-    const DU du;
-    const V qx = hn::Set(d, q.x), qy = hn::Set(d, q.y), qz = hn::Set(d, q.z), r2 = hn::Set(d, radius2);
-    const auto skipped = hn::Set(du, skip);
-    std::size_t size = 0;
-    for (std::size_t t = 0; t < c.count; t += hn::Lanes(d)) {
+struct Test {
+    V qx, qy, qz, r2;
+    hn::Vec<DU> skipped;
+
+    Test(const glm::vec3& q, float radius2, std::uint32_t skip)
+        : qx(hn::Set(D(), q.x)), qy(hn::Set(D(), q.y)), qz(hn::Set(D(), q.z)), r2(hn::Set(D(), radius2)),
+          skipped(hn::Set(DU(), skip)) {}
+
+    HWY_INLINE Block operator()(const Candidates& c, std::size_t t, const PeriodicBox& box) const {
+        const D d;
+        const DU du;
         const V dx = Delta<Periodic>(qx, hn::LoadU(d, c.x + t), box.period.x, box.half.x);
         const V dy = Delta<Periodic>(qy, hn::LoadU(d, c.y + t), box.period.y, box.half.y);
         const V dz = Delta<Periodic>(qz, hn::LoadU(d, c.z + t), box.period.z, box.half.z);
@@ -39,9 +48,20 @@ std::size_t SelectT(const Candidates& c, const glm::vec3& q, float radius2, std:
         // Unfused and in the scalar loop's order (this file is built with -ffp-contract=off):
         // the same pairs on every CPU. Padding lanes sit at +∞ and fail the test.
         const V d2 = hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz));
-        const auto hit = hn::And(hn::RebindMask(du, hn::Le(d2, r2)), hn::Ne(index, skipped));
-        hn::StoreU(hn::Compress(index, hit), du, out + size);
-        size += hn::CountTrue(du, hit);
+        return {index, hn::And(hn::RebindMask(du, hn::Le(d2, r2)), hn::Ne(index, skipped))};
+    }
+};
+
+template <bool Periodic>
+std::size_t SelectT(const Candidates& c, const glm::vec3& q, float radius2, std::uint32_t skip, const PeriodicBox& box,
+                    std::uint32_t* out) {
+    const DU du;
+    const Test<Periodic> test(q, radius2, skip);
+    std::size_t size = 0;
+    for (std::size_t t = 0; t < c.count; t += hn::Lanes(du)) {
+        const Block block = test(c, t, box);
+        hn::StoreU(hn::Compress(block.index, block.hit), du, out + size);
+        size += hn::CountTrue(du, block.hit);
     }
     return size;
 }
@@ -50,28 +70,21 @@ std::size_t SelectT(const Candidates& c, const glm::vec3& q, float radius2, std:
 template <bool Periodic>
 std::size_t SelectOffsetsT(const Candidates& c, const glm::vec3& q, float radius2, std::uint32_t base,
                            const PeriodicBox& box, std::int16_t* out, bool& misfit) {
-    const D d;
     const DU du;
     const hn::RebindToSigned<D> di;
     const hn::Rebind<std::int16_t, D> d16;
-    const V qx = hn::Set(d, q.x), qy = hn::Set(d, q.y), qz = hn::Set(d, q.z), r2 = hn::Set(d, radius2);
-    const auto skipped = hn::Set(du, base);
+    const Test<Periodic> test(q, radius2, base);
     const auto origin = hn::Set(di, static_cast<std::int32_t>(base));
     const auto lowest = hn::Set(di, -32768), highest = hn::Set(di, 32767);
     auto outside = hn::FirstN(di, 0);
     std::size_t size = 0;
-    for (std::size_t t = 0; t < c.count; t += hn::Lanes(d)) {
-        const V dx = Delta<Periodic>(qx, hn::LoadU(d, c.x + t), box.period.x, box.half.x);
-        const V dy = Delta<Periodic>(qy, hn::LoadU(d, c.y + t), box.period.y, box.half.y);
-        const V dz = Delta<Periodic>(qz, hn::LoadU(d, c.z + t), box.period.z, box.half.z);
-        const auto index = hn::LoadU(du, c.index + t);
-        const V d2 = hn::Add(hn::Add(hn::Mul(dx, dx), hn::Mul(dy, dy)), hn::Mul(dz, dz));  // as SelectT
-        const auto hit = hn::And(hn::RebindMask(du, hn::Le(d2, r2)), hn::Ne(index, skipped));
-        const auto offset = hn::Sub(hn::BitCast(di, index), origin);
-        const auto hitI = hn::RebindMask(di, hit);
-        outside = hn::Or(outside, hn::And(hitI, hn::Or(hn::Lt(offset, lowest), hn::Gt(offset, highest))));
-        hn::StoreU(hn::DemoteTo(d16, hn::Compress(offset, hitI)), d16, out + size);
-        size += hn::CountTrue(du, hit);
+    for (std::size_t t = 0; t < c.count; t += hn::Lanes(du)) {
+        const Block block = test(c, t, box);
+        const auto offset = hn::Sub(hn::BitCast(di, block.index), origin);
+        const auto hit = hn::RebindMask(di, block.hit);
+        outside = hn::Or(outside, hn::And(hit, hn::Or(hn::Lt(offset, lowest), hn::Gt(offset, highest))));
+        hn::StoreU(hn::DemoteTo(d16, hn::Compress(offset, hit)), d16, out + size);
+        size += hn::CountTrue(du, block.hit);
     }
     if (!hn::AllFalse(di, outside)) misfit = true;
     return size;

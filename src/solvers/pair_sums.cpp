@@ -52,8 +52,7 @@ float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, con
         sum += xj.w * w.value(r);
         codes[k] = factors.encode(w, r);
     }
-    if (gradients != nullptr)
-        {
+    if (gradients != nullptr) {  // over the codes just written
         Neighbors coded = neighbors;
         coded.code = codes;
         *gradients = gradientAndSquaresSum<Periodic>(coded, points, xi, box);
