@@ -11,11 +11,11 @@
 /// On the periodic axes of the grid's PeriodicBox, distances are to the nearest image.
 ///
 /// The lists `build` makes hold each neighbour j of i as the 16-bit offset j − i where all of
-/// i's fit (particles stored in cell order are near their neighbours: within ±6k on the 50k
-/// dam break), each list padded with offset 0 to a whole SIMD block: ~2.2 bytes a pair
-/// instead of 4 (~60 bytes a fluid particle). A list with a neighbour farther in storage
-/// (across a slab of cells holding more than 32k particles: a few dozen of the 205k dam
-/// break's lists late in its second) keeps 32-bit indices, as every CrossNeighborList does.
+/// i's fit (particles stored in cell order are near their neighbours in storage), each list
+/// padded with offset 0 to a whole SIMD block: ~2.2 bytes a pair instead of 4 (~60 bytes a
+/// fluid particle). A list with a neighbour farther in storage (across a slab of cells
+/// holding more than 32k particles: a few dozen of the 205k dam break's lists late in its
+/// second) keeps 32-bit indices, as every CrossNeighborList does.
 /// NeighborSpan reads either.
 
 #include <cstddef>
