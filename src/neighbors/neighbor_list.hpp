@@ -41,8 +41,11 @@ public:
 
     [[nodiscard]] std::size_t size() const { return count_; }
     [[nodiscard]] bool empty() const { return count_ == 0; }
-    [[nodiscard]] std::uint32_t operator[](std::size_t k) const {
-        return offset_ != nullptr ? base_ + static_cast<std::uint32_t>(static_cast<std::int32_t>(offset_[k])) : index_[k];
+    [[nodiscard]] std::uint32_t operator[](std::size_t k) const { return at(index_, offset_, base_, k); }
+    /// Neighbour k of a list of indices (offset null) or of offsets from base.
+    [[nodiscard]] static std::uint32_t at(const std::uint32_t* index, const std::int16_t* offset, std::uint32_t base,
+                                          std::size_t k) {
+        return offset != nullptr ? base + static_cast<std::uint32_t>(static_cast<std::int32_t>(offset[k])) : index[k];
     }
     /// The indices (nullptr when offsets), or the offsets and their base (nullptr when indices).
     [[nodiscard]] const std::uint32_t* indices() const { return index_; }
@@ -58,9 +61,7 @@ public:
         iterator() = default;
         iterator(const NeighborSpan& span, std::size_t k)
             : index_(span.index_), offset_(span.offset_), base_(span.base_), k_(k) {}
-        std::uint32_t operator*() const {
-            return offset_ != nullptr ? base_ + static_cast<std::uint32_t>(static_cast<std::int32_t>(offset_[k_])) : index_[k_];
-        }
+        std::uint32_t operator*() const { return at(index_, offset_, base_, k_); }
         iterator& operator++() {
             ++k_;
             return *this;
@@ -177,7 +178,6 @@ public:
         list_.buildCross(grid, gridPositions, queries, radius, threads, queryIndices);
     }
 
-    static constexpr std::size_t kReadPast = NeighborList::kReadPast;
     [[nodiscard]] std::span<const std::uint32_t> of(std::uint32_t i) const { return list_.indicesOf(i); }
     [[nodiscard]] std::uint64_t offset(std::uint32_t i) const { return list_.offset(i); }
     [[nodiscard]] std::uint32_t particleCount() const { return list_.particleCount(); }

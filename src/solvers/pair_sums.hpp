@@ -44,7 +44,7 @@ struct Neighbors {
     explicit Neighbors(const NeighborSpan& list, const std::uint16_t* codes = nullptr)
         : index(list.indices()), code(codes), count(list.size()), offset(list.offsets()), base(list.base()) {}
     [[nodiscard]] std::uint32_t at(std::size_t k) const {
-        return offset != nullptr ? base + static_cast<std::uint32_t>(static_cast<std::int32_t>(offset[k])) : index[k];
+        return NeighborSpan::at(index, offset, base, k);
     }
 };
 
