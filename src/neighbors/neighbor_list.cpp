@@ -192,8 +192,9 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
     std::atomic<bool> tooMany{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
-        std::vector<std::int16_t>& offsetBuffer = offsetBuffers_[static_cast<std::size_t>(c)];
-        std::vector<std::uint32_t>& indexBuffer = chunkBuffers_[static_cast<std::size_t>(c)];
+        // Filled through locals, as the vectors' headers share cache lines in the members.
+        std::vector<std::int16_t> offsetBuffer = std::move(offsetBuffers_[static_cast<std::size_t>(c)]);
+        std::vector<std::uint32_t> indexBuffer = std::move(chunkBuffers_[static_cast<std::size_t>(c)]);
         clearWithRoom(offsetBuffer);
         clearWithRoom(indexBuffer);
         CandidateSet candidates;
@@ -226,6 +227,8 @@ void NeighborList::build(const UniformGrid& grid, std::span<const glm::vec3> pos
                 count_[i] = (static_cast<std::uint32_t>(count) & kCountMask) | (wide ? kWide : 0u);
             }
         });
+        offsetBuffers_[static_cast<std::size_t>(c)] = std::move(offsetBuffer);
+        chunkBuffers_[static_cast<std::size_t>(c)] = std::move(indexBuffer);
     }
     throwIfTooMany(tooMany, kCountMask);
     linkChunks(chunks, threads, [&](int c, auto&& f) {
@@ -276,7 +279,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
     std::atomic<bool> tooMany{false};
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int c = 0; c < chunks; ++c) {
-        std::vector<std::uint32_t>& buffer = chunkBuffers_[static_cast<std::size_t>(c)];
+        std::vector<std::uint32_t> buffer = std::move(chunkBuffers_[static_cast<std::size_t>(c)]);  // a local, as in build
         clearWithRoom(buffer);
         auto finish = [&](std::uint32_t i, std::size_t begin) {
             const std::size_t count = buffer.size() - begin;
@@ -299,6 +302,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
                     });
                 finish(i, begin);
             }
+            chunkBuffers_[static_cast<std::size_t>(c)] = std::move(buffer);
             continue;
         }
         CandidateSet candidates;
@@ -327,6 +331,7 @@ void NeighborList::buildCross(const UniformGrid& grid, std::span<const glm::vec3
             }
             first = last;
         }
+        chunkBuffers_[static_cast<std::size_t>(c)] = std::move(buffer);
     }
     throwIfTooMany(tooMany, kCountMask);
     linkChunks(chunks, threads, [&](int c, auto&& f) {
