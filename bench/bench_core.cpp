@@ -36,6 +36,22 @@ void BM_NeighborSearch(benchmark::State& state) {
     state.counters["threads"] = world.threads();
 }
 
+/// The uniform grid's counting sort alone (the first part of BM_NeighborSearch), at the
+/// world's thread count.
+void BM_GridBuild(benchmark::State& state) {
+    tide::World world = tide::scenarios::damBreak(spacingFor(static_cast<int>(state.range(0))));
+    world.step(1.0);
+    const auto& x = world.particles().position;
+    tide::UniformGrid grid;
+    for (auto _ : state) {
+        grid.build(x, world.supportRadius(), world.threads());
+        benchmark::DoNotOptimize(grid.cellCount());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(x.size()));
+    state.counters["cells"] = grid.cellCount();
+    state.counters["threads"] = world.threads();
+}
+
 /// The pressure solves' pair sums (solvers/pair_sums.hpp) over every particle of the 50k dam
 /// break's column after one step, one thread: ns per pair, in SIMD lanes (arg 0) or one pair
 /// at a time (arg 1). Which sum: 0 kernel (density), 1 gradient (pressure), 2 divergence.
@@ -116,6 +132,7 @@ constexpr char kPcisph[] = "pcisph";
 constexpr char kDfsph[] = "dfsph";
 
 BENCHMARK(BM_PairSums)->ArgsProduct({{0, 1}, {0, 1, 2}})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_GridBuild)->Arg(50000)->Arg(200000)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(BM_NeighborSearch)->Arg(50000)->Arg(200000)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_DamBreak<kClassic>)->Name("BM_DamBreak/classic")->Arg(50000)->Arg(200000)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 BENCHMARK(BM_DamBreak<kWcsph>)->Name("BM_DamBreak/wcsph")->Arg(50000)->Arg(200000)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();

@@ -9,32 +9,37 @@
 namespace tide {
 
 namespace {
-int clampCoord(float c, int dim) {
-    // `c > 0 ? c : 0` also maps NaN to 0.
-    const float lo = c > 0.0f ? c : 0.0f;
-    const float hi = static_cast<float>(dim - 1);
-    return static_cast<int>(lo < hi ? lo : hi);
+/// The bounding box of the finite coordinates (non-finite ones count as 0), in one pass
+/// over the points per thread; min and max do not depend on the order, so neither on the
+/// thread count.
+void finiteBounds(std::span<const glm::vec3> positions, int threads, glm::vec3& lo, glm::vec3& hi) {
+    const auto n = static_cast<std::int64_t>(positions.size());
+    constexpr float inf = std::numeric_limits<float>::infinity();
+    float lx = inf, ly = inf, lz = inf, hx = -inf, hy = -inf, hz = -inf;
+    auto finiteOr0 = [](float v) { return std::isfinite(v) ? v : 0.0f; };
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && n >= kParallelGrain) \
+    reduction(min : lx, ly, lz) reduction(max : hx, hy, hz)
+    for (std::int64_t i = 0; i < n; ++i) {
+        const glm::vec3& x = positions[static_cast<std::size_t>(i)];
+        const float px = finiteOr0(x.x), py = finiteOr0(x.y), pz = finiteOr0(x.z);
+        lx = std::min(lx, px);
+        ly = std::min(ly, py);
+        lz = std::min(lz, pz);
+        hx = std::max(hx, px);
+        hy = std::max(hy, py);
+        hz = std::max(hz, pz);
+    }
+    lo = {lx, ly, lz};
+    hi = {hx, hy, hz};
 }
 }  // namespace
-
-glm::ivec3 UniformGrid::cellOf(const glm::vec3& x) const {
-    const glm::vec3 c = (x - origin_) * invCellSize_;
-    return {clampCoord(c.x, dims_.x), clampCoord(c.y, dims_.y), clampCoord(c.z, dims_.z)};
-}
 
 void UniformGrid::build(std::span<const glm::vec3> positions, float minCellSize, int threads,
                         const PeriodicBox& periodic) {
     const auto n = static_cast<std::uint32_t>(positions.size());
     periodic_ = periodic;
     glm::vec3 lo(0.0f), hi(0.0f);
-    if (n > 0) {
-        auto finiteOr = [](float v) { return std::isfinite(v) ? v : 0.0f; };
-        for (int axis = 0; axis < 3; ++axis) {
-            if (periodic.periodic(axis)) continue;
-            lo[axis] = -parallelMax(n, threads, [&](std::uint32_t i) { return -finiteOr(positions[i][axis]); });
-            hi[axis] = parallelMax(n, threads, [&](std::uint32_t i) { return finiteOr(positions[i][axis]); });
-        }
-    }
+    if (n > 0) finiteBounds(positions, threads, lo, hi);
     for (int axis = 0; axis < 3; ++axis)
         if (periodic.periodic(axis)) {
             lo[axis] = periodic.min[axis];

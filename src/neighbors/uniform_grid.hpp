@@ -39,7 +39,10 @@ public:
     /// The periodic axes the grid was built with: pair vectors over its points use periodic().delta().
     [[nodiscard]] const PeriodicBox& periodic() const { return periodic_; }
     /// Cell coordinates of a point, clamped into the grid (non-finite input maps to a border cell).
-    [[nodiscard]] glm::ivec3 cellOf(const glm::vec3& x) const;
+    [[nodiscard]] glm::ivec3 cellOf(const glm::vec3& x) const {
+        const glm::vec3 c = (x - origin_) * invCellSize_;
+        return {clampCoord(c.x, dims_.x), clampCoord(c.y, dims_.y), clampCoord(c.z, dims_.z)};
+    }
     [[nodiscard]] std::uint32_t cellIndex(const glm::ivec3& c) const {
         return static_cast<std::uint32_t>(c.x + dims_.x * (c.y + dims_.y * c.z));
     }
@@ -82,6 +85,13 @@ public:
     }
 
 private:
+    static int clampCoord(float c, int dim) {
+        // `c > 0 ? c : 0` also maps NaN to 0.
+        const float lo = c > 0.0f ? c : 0.0f;
+        const float hi = static_cast<float>(dim - 1);
+        return static_cast<int>(lo < hi ? lo : hi);
+    }
+
     /// The distinct cell coordinates around c along one axis, ascending; returns how many (≤ 3).
     [[nodiscard]] int neighborCoordinates(int c, int axis, int out[3]) const {
         const int dim = dims_[axis];
