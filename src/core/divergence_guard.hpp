@@ -1,7 +1,8 @@
 #pragma once
 /// \file
-/// The per-step divergence guard. It rides on the serial pass over the particles that
-/// World's statistics already make (max speed, density error), so it costs a few compares
+/// The per-step divergence guard. It rides on the pass over the particles that World's
+/// statistics already make (max speed, density error; one guard per block of particles, the
+/// lowest block's find kept), so it costs a few compares
 /// per particle: a non-finite position, velocity, density or pressure, or a particle that
 /// moved more than kRunawaySupports support radii in one step, is recorded for the first
 /// (lowest) index, which makes the report the same for any thread count.

@@ -316,16 +316,38 @@ struct World::Impl {
         stats.dtMin = stats.steps == 1 ? dt : std::min(stats.dtMin, dt);
         stats.dtMax = std::max(stats.dtMax, dt);
         stats.dtSum += dt;
-        DivergenceGuard guard(dt, h);
+        // Fixed blocks of particles, each summed in order and then combined in block order,
+        // so the sums and the guard's first bad particle do not depend on the thread count.
+        struct Block {
+            double errorSum = 0.0, compressionSum = 0.0, maxSpeed2 = 0.0;
+            std::optional<Divergence> found;
+        };
+        constexpr std::uint32_t kBlock = 4096;
+        const std::uint32_t count = particles.size();
+        const std::uint32_t blockCount = (count + kBlock - 1) / kBlock;
+        std::vector<Block> blocks(blockCount);
+#pragma omp parallel for schedule(static) num_threads(threads) if (threads > 1 && blockCount > 1)
+        for (std::uint32_t b = 0; b < blockCount; ++b) {
+            Block& block = blocks[b];
+            DivergenceGuard guard(dt, h);
+            for (std::uint32_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
+                const double rho0 = materials[particles.material[i]].restDensity;
+                const double error = (particles.density[i] - rho0) / rho0;
+                block.errorSum += std::abs(error);
+                block.compressionSum += std::max(error, 0.0);
+                const double speed2 = glm::dot(particles.velocity[i], particles.velocity[i]);
+                block.maxSpeed2 = std::max(block.maxSpeed2, speed2);
+                guard.check(particles, i, speed2);
+            }
+            block.found = guard.found();
+        }
         double errorSum = 0.0, compressionSum = 0.0, maxSpeed2 = 0.0;
-        for (std::uint32_t i = 0; i < particles.size(); ++i) {
-            const double rho0 = materials[particles.material[i]].restDensity;
-            const double error = (particles.density[i] - rho0) / rho0;
-            errorSum += std::abs(error);
-            compressionSum += std::max(error, 0.0);
-            const double speed2 = glm::dot(particles.velocity[i], particles.velocity[i]);
-            maxSpeed2 = std::max(maxSpeed2, speed2);
-            guard.check(particles, i, speed2);
+        std::optional<Divergence> found;
+        for (const Block& block : blocks) {
+            errorSum += block.errorSum;
+            compressionSum += block.compressionSum;
+            maxSpeed2 = std::max(maxSpeed2, block.maxSpeed2);
+            if (!found) found = block.found;
         }
         const double n = std::max<double>(1.0, particles.size());
         stats.meanDensityError = static_cast<float>(errorSum / n);
@@ -334,8 +356,8 @@ struct World::Impl {
         stats.maxMeanDensityError = std::max(stats.maxMeanDensityError, stats.meanDensityError);
         stats.maxMeanCompression = std::max(stats.maxMeanCompression, stats.meanCompression);
         stats.sumMeanDensityError += stats.meanDensityError;
-        if (!guard.found() && stats.meanCompression > kCollapsedCompression) guard.found() = mostCompressed();
-        return guard.found();
+        if (!found && stats.meanCompression > kCollapsedCompression) found = mostCompressed();
+        return found;
     }
 
     /// The collapsed fluid's most compressed particle, as a Divergence.
