@@ -1,6 +1,7 @@
 #include <tide/world.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -124,7 +125,7 @@ struct World::Impl {
     /// most of it is far from the water; lists and per-step arrays sized to all of it cost
     /// ~16 bytes a boundary particle.
     std::vector<std::uint32_t> boundaryNearFluid;
-    std::vector<bool> boundaryMarks;  ///< scratch of findBoundaryNearFluid (one bit a boundary particle)
+    std::vector<std::uint8_t> boundaryMarks;  ///< scratch of findBoundaryNearFluid (a byte a boundary particle)
     std::vector<EmitterState> emitters;
     std::vector<ObstacleDef> obstacles;        ///< all of them, as defined
     std::vector<ObstacleDef> fixedObstacles;   ///< those without motion
@@ -286,9 +287,12 @@ struct World::Impl {
     /// The boundary particles some fluid particle's wall list names: the same pairs the
     /// boundary-to-fluid search would find, as both test the same distance.
     void findBoundaryNearFluid() {
-        boundaryMarks.assign(boundary.position.size(), false);
-        for (std::uint32_t i = 0; i < particles.size(); ++i)
-            for (const std::uint32_t b : boundaryNeighbors.of(i)) boundaryMarks[b] = true;
+        boundaryMarks.assign(boundary.position.size(), 0);
+        // Threads may mark the same byte: relaxed atomic stores, plain stores on x86.
+        parallelFor(particles.size(), threads, [&](std::uint32_t i) {
+            for (const std::uint32_t b : boundaryNeighbors.of(i))
+                std::atomic_ref<std::uint8_t>(boundaryMarks[b]).store(1, std::memory_order_relaxed);
+        });
         boundaryNearFluid.clear();
         for (std::uint32_t b = 0; b < boundaryMarks.size(); ++b)
             if (boundaryMarks[b]) {
