@@ -4,7 +4,7 @@
 // runs in its own process (so its peak memory is its own), prints one table row, and the rows
 // are appended to bench/results/<cpu model>.csv with the git revision.
 //
-//   tide_scenarios [--seconds S] [--threads T] [--only NAME] [--csv FILE]
+//   tide_scenarios [--seconds S] [--threads T] [--only NAME] [--solver SOLVER] [--csv FILE]
 //
 // S simulated seconds per scenario (default 0.1; SPlisHSPlasH's figures are for 1 s).
 #include <sys/resource.h>
@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <tide/io/exporters.hpp>
@@ -162,26 +163,19 @@ int width(const std::string& column) { return static_cast<int>(std::max<std::siz
 int main(int argc, char** argv) {
     double seconds = 0.1;
     int threads = 0;
-    std::string only, csv;
+    std::string only, solver, csv;
     int one = -1;
-    for (int a = 1; a < argc; ++a) {
-        const std::string arg = argv[a];
-        const bool hasValue = a + 1 < argc;
-        if (arg == "--seconds" && hasValue) seconds = std::stod(argv[++a]);
-        else if (arg == "--threads" && hasValue) threads = std::stoi(argv[++a]);
-        else if (arg == "--only" && hasValue) only = argv[++a];
-        else if (arg == "--csv" && hasValue) csv = argv[++a];
-        else if (arg == "--one" && hasValue) one = std::stoi(argv[++a]);
-        else {
-            std::cerr << "tide_scenarios: unknown argument " << arg
-                      << " (use --seconds S, --threads T, --only NAME, --csv FILE)\n";
-            return 2;
-        }
-    }
-    if (!(seconds > 0.0)) {
-        std::cerr << "tide_scenarios: --seconds must be > 0, got " << seconds << "\n";
-        return 2;
-    }
+    CLI::App app{"Whole-simulation benchmarks: one row per scenario, appended to bench/results/<cpu model>.csv"};
+    app.add_option("--seconds", seconds, "simulated seconds per scenario")->capture_default_str()->check(CLI::PositiveNumber);
+    app.add_option("--threads", threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
+    app.add_option("--only", only, "scenarios whose name contains NAME, or whose solver is NAME");
+    app.add_option("--solver", solver, "only the dam breaks of this solver (the jet demo runs its scene's)")
+        ->check(CLI::IsMember({"dfsph", "wcsph"}));
+    app.add_option("--csv", csv, "results file (default: bench/results/<cpu model>.csv)");
+    app.add_option("--one", one, "run scenario K in this process and print its row as JSON (internal)")
+        ->check(CLI::Range(0, static_cast<int>(kScenarios.size()) - 1))
+        ->group("");
+    CLI11_PARSE(app, argc, argv);
     if (one >= 0) return runOne(kScenarios.at(static_cast<std::size_t>(one)), seconds, threads);
 
     if (csv.empty()) csv = std::string(TIDE_SOURCE_DIR) + "/bench/results/" + cpuModel() + ".csv";
@@ -208,6 +202,7 @@ int main(int argc, char** argv) {
     int failures = 0;
     for (std::size_t k = 0; k < kScenarios.size(); ++k) {
         if (!only.empty() && kScenarios[k].name.find(only) == std::string::npos && kScenarios[k].solver != only) continue;
+        if (!solver.empty() && kScenarios[k].solver != solver) continue;
         const std::string line = shellOutput(self + " --one " + std::to_string(k) + " --seconds " +
                                              std::to_string(seconds) + " --threads " + std::to_string(threads));
         json row;
