@@ -54,6 +54,7 @@ const std::vector<Scenario> kScenarios = {
     // SPlisHSPlasH's DamBreakModel (viscous, block off the walls): its jets die out, so its
     // steps are longer than the water corner's (docs/performance.md § The time step).
     {"dam_break_model_50k", "scenes/bench_dam_break_model.json", "dfsph", 0.0f, 0.0f, 0.0f},
+    {"dam_break_model_200k", "scenes/bench_dam_break_model.json", "dfsph", 0.0168f, 0.0f, 0.0f},
     {"jets", "scenes/jets.json", "", 0.0f, 0.0f, 0.0f},
 };
 
