@@ -312,3 +312,28 @@ TEST(IncompressibleSolvers, FullBoxWithoutGravityStaysStill) {
         EXPECT_LT(fastest, 1e-3f) << solver;
     }
 }
+
+// solver.min_divergence_iterations: dfsph's divergence-free solve takes at least that many
+// iterations, whatever min_iterations (the density solve's) says; −1 follows min_iterations.
+TEST(DfsphSolver, DivergenceSolveTakesItsOwnMinimum) {
+    auto iterationsPerStep = [](int minIterations, int minDivergence) {
+        WorldDef def;
+        def.domainMax = {0.2f, 0.2f, 0.2f};
+        def.particleSpacing = 0.02f;
+        def.solver.method = "dfsph";
+        def.solver.minIterations = minIterations;
+        def.solver.minDivergenceIterations = minDivergence;
+        def.threads = 1;
+        World world(def);
+        world.addMaterial(MaterialDef{});
+        world.addBlock({{0, 0, 0}, {0.2f, 0.1f, 0.2f}, {0, 0, 0}, 0});
+        world.advance(0.05);
+        return static_cast<double>(world.stats().pressureIterationsSum) / static_cast<double>(world.stats().steps);
+    };
+    const double none = iterationsPerStep(0, 0), five = iterationsPerStep(0, 5), followed = iterationsPerStep(5, -1);
+    std::printf("dfsph, still water: %.2f pressure iterations a step with no minimum, %.2f with 5 for the divergence "
+                "solve, %.2f with 5 for both\n", none, five, followed);
+    EXPECT_LT(none, five);
+    EXPECT_GE(five, 5.0);
+    EXPECT_GE(followed, 10.0);
+}

@@ -97,6 +97,10 @@ struct SolverDef {
     /// (ρ − ρ0)/ρ0 is below this (0.001 = 0.1 %).
     float maxDensityError = 0.001f;
     int minIterations = 2;                  ///< pressure iterations at least
+    /// dfsph's divergence-free solve: iterations at least; −1: minIterations. SPlisHSPlasH takes
+    /// 1, which speeds dam breaks (fewer jets) but stirs still water at short steps
+    /// (docs/performance.md), so the default stays minIterations.
+    int minDivergenceIterations = -1;
     int maxIterations = 100;                ///< pressure iterations at most
     float cflNumber = 0.4f;                 ///< dt ≤ cfl · h / (c + |v|max)
     float forceNumber = 0.25f;              ///< dt ≤ forceNumber · √(h / |a|max)

@@ -64,6 +64,9 @@ void validateWorldDef(const WorldDef& d) {
     if (s.xsph >= 0.0f) requireInRange("solver.xsph", s.xsph, 0.0f, 1.0f);
     if (s.momentum >= 0.0f) requireInRange("solver.momentum", s.momentum, 0.0f, 0.95f);
     requireInRange("solver.maxDensityError", s.maxDensityError, 1e-6f, 0.5f);
+    if (s.minDivergenceIterations < -1)
+        throw std::invalid_argument("solver.minDivergenceIterations: must be >= 0 (or -1: minIterations), got " +
+                                    std::to_string(s.minDivergenceIterations));
     if (s.minIterations < 0 || s.maxIterations < std::max(1, s.minIterations))
         throw std::invalid_argument("solver.maxIterations: must be >= max(1, minIterations), got " +
                                     std::to_string(s.maxIterations));

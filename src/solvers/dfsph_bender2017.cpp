@@ -237,6 +237,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) { positionK_[i] = glm::vec4(p.velocity[i], 1.0f / p.density[i]); });
     };
     push();
+    const int minimum = ctx.solver.minDivergenceIterations >= 0 ? ctx.solver.minDivergenceIterations : ctx.solver.minIterations;
     int iteration = 0;
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -244,7 +245,8 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             error_[i] = interior ? std::max(densityRate(ctx, i), 0.0f) : 0.0f;  // only compression
         });
         // Mean relative compression rate, over the last step's length.
-        if (iteration >= ctx.solver.minIterations && meanRelativeError(ctx, Solve::Divergence) * lastDt_ <= ctx.solver.maxDensityError)
+        if (iteration >= minimum &&
+            meanRelativeError(ctx, Solve::Divergence) * lastDt_ <= ctx.solver.maxDensityError)
             break;
         // Full Jacobi steps, as the paper takes, for one rest density; with a density contrast
         // the light particles' rows are far from diagonally dominant and full steps diverge.
