@@ -56,6 +56,9 @@ const std::vector<Scenario> kScenarios = {
     {"dam_break_model_50k", "scenes/bench_dam_break_model.json", "dfsph", 0.0f, 0.0f, 0.0f},
     {"dam_break_model_200k", "scenes/bench_dam_break_model.json", "dfsph", 0.0168f, 0.0f, 0.0f},
     {"jets", "scenes/jets.json", "", 0.0f, 0.0f, 0.0f},
+    // The seed's four-material demo (demo 4: heavy oil, light oil, light water and water layer
+    // by density), 20,000 particles from the start: issue 8's interactive target.
+    {"four_materials", "scenes/many_materials.json", "", 0.0f, 0.0f, 0.0f},
 };
 
 std::string shellOutput(const std::string& command) {
@@ -170,7 +173,7 @@ int main(int argc, char** argv) {
     app.add_option("--seconds", seconds, "simulated seconds per scenario")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--threads", threads, "worker threads (0: all cores)")->check(CLI::NonNegativeNumber);
     app.add_option("--only", only, "scenarios whose name contains NAME, or whose solver is NAME");
-    app.add_option("--solver", solver, "only the dam breaks of this solver (the jet demo runs its scene's)")
+    app.add_option("--solver", solver, "only the dam breaks of this solver (the seed's demos run their scenes')")
         ->check(CLI::IsMember({"dfsph", "wcsph"}));
     app.add_option("--csv", csv, "results file (default: bench/results/<cpu model>.csv)");
     app.add_option("--one", one, "run scenario K in this process and print its row as JSON (internal)")
