@@ -40,11 +40,15 @@ float parallelMax(std::uint32_t n, int threads, F&& f, float init = -std::numeri
     return result;
 }
 
+/// Indices per block of a reduction that must not depend on the thread count: each block is
+/// summed in order, then the blocks in order (parallelSum; World's per-step statistics).
+inline constexpr std::uint32_t kReductionBlock = 4096;
+
 /// Σ f(i) over i in [0, n), in double. The same for any thread count: fixed blocks of
 /// indices are summed in order, then the blocks' sums in order.
 template <class F>
 double parallelSum(std::uint32_t n, int threads, F&& f) {
-    constexpr std::uint32_t kBlock = 4096;
+    constexpr std::uint32_t kBlock = kReductionBlock;
     const std::uint32_t blocks = (n + kBlock - 1) / kBlock;
     std::vector<double> partial(blocks, 0.0);
     const bool parallel = threads > 1 && blocks > 1;

@@ -329,7 +329,7 @@ struct World::Impl {
             double errorSum = 0.0, compressionSum = 0.0, maxSpeed2 = 0.0;
             std::optional<Divergence> found;
         };
-        constexpr std::uint32_t kBlock = 4096;
+        constexpr std::uint32_t kBlock = kReductionBlock;
         const std::uint32_t count = particles.size();
         const std::uint32_t blockCount = (count + kBlock - 1) / kBlock;
         std::vector<Block> blocks(blockCount);
