@@ -2,8 +2,14 @@
 // dfsph, pcisph and wcsph, layering by density, no gap at an interface, Rayleigh–Taylor,
 // buoyancy, and dye diffusion between miscible materials.
 //
-// The worlds are thin boxes, two particle layers deep in z between walls, so each test runs
-// in seconds: a 2D flow with the walls' boundary particles in front and behind.
+// The worlds are thin boxes, three particle layers deep in z between walls, so each test runs
+// in seconds: a 2D flow with the walls' boundary particles in front and behind. Not two:
+// in a two-layer slab every particle touches both walls, and at the free surface the walls'
+// boundary particles above the water push the top layer's two rows towards each other
+// (nothing is above them on the fluid's side). In the 5:1 column drop two such mirror twins
+// closed from 0.93 to 0.09 spacings within 0.07 s, and the density solve could not part them
+// (the kernel's gradient vanishes at r → 0): whether its retaken steps then recovered was
+// down to the sums' rounding (measured 2026-12-02, docs/performance.md).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -24,10 +30,10 @@ using namespace tide;
 
 constexpr float kSpacing = 0.01f;
 
-/// A box `width` × `height` × 2 spacings, walls all round.
+/// A box `width` × `height` × 3 spacings, walls all round.
 World thinBox(float width, float height, const std::string& solver, float spacing = kSpacing) {
     WorldDef def;
-    def.domainMax = {width, height, 2.0f * spacing};
+    def.domainMax = {width, height, 3.0f * spacing};
     def.particleSpacing = spacing;
     def.solver.method = solver;
     def.threads = 1;
@@ -89,7 +95,7 @@ double meanCompression(const World& world, MaterialIndex m) {
 
 struct Layering {
     std::vector<float> medians;       ///< per material, heaviest first
-    std::vector<double> wrongSide;    ///< per interface: fraction of the two layers' particles on the wrong side
+    std::vector<double> wrongSide;    ///< per interface: fraction of the two layers' particles on the wrong side, likewise
     std::vector<double> compression;  ///< per material, time-averaged over the last 0.5 s
     bool finite = true;
     std::uint32_t lost = 0;
@@ -107,27 +113,35 @@ Layering dropColumns(const std::string& solver, const std::vector<float>& densit
     for (std::size_t k = 0; k < densities.size(); ++k)
         addBox(world, columnWidth * static_cast<float>(k), 0.0f, columnWidth * static_cast<float>(k + 1), height, materials[k]);
     const std::uint32_t count = world.particles().size();
+    // Each layer is `height`/n thick when settled: interface k lies at (k + 1)·height/n.
+    const float layer = height / static_cast<float>(densities.size());
+    auto addWrongSide = [&](std::vector<double>& sums) {
+        for (std::size_t k = 0; k + 1 < densities.size(); ++k) {
+            const float interface = layer * static_cast<float>(k + 1);
+            std::size_t wrong = 0, total = 0;
+            for (const float y : heightsOf(world, materials[k])) wrong += y > interface, ++total;
+            for (const float y : heightsOf(world, materials[k + 1])) wrong += y < interface, ++total;
+            sums[k] += static_cast<double>(wrong) / static_cast<double>(total);
+        }
+    };
     Layering out;
     world.advance(settle - 0.5, [&] { out.finite = out.finite && allFinite(world); });
     out.compression.assign(densities.size(), 0.0);
+    out.wrongSide.assign(densities.size() - 1, 0.0);
     int samples = 0;
+    // Averaged over the last 0.5 s: the settled interfaces still slosh (the 1000/200 one of the
+    // three-material drop read 0.02–0.10 at half-second marks from 1.5 to 4 s), and one
+    // instant samples the slosh's phase.
     world.advance(0.5, [&] {
         out.finite = out.finite && allFinite(world);
         for (std::size_t k = 0; k < densities.size(); ++k) out.compression[k] += meanCompression(world, materials[k]);
+        addWrongSide(out.wrongSide);
         ++samples;
     });
     for (double& c : out.compression) c /= samples;
+    for (double& w : out.wrongSide) w /= samples;
     out.lost = count - world.particles().size() + world.countEscapedParticles();
     for (const MaterialIndex m : materials) out.medians.push_back(median(heightsOf(world, m)));
-    // Each layer is `height`/n thick when settled: interface k lies at (k + 1)·height/n.
-    const float layer = height / static_cast<float>(densities.size());
-    for (std::size_t k = 0; k + 1 < densities.size(); ++k) {
-        const float interface = layer * static_cast<float>(k + 1);
-        std::size_t wrong = 0, total = 0;
-        for (const float y : heightsOf(world, materials[k])) wrong += y > interface, ++total;
-        for (const float y : heightsOf(world, materials[k + 1])) wrong += y < interface, ++total;
-        out.wrongSide.push_back(static_cast<double>(wrong) / static_cast<double>(total));
-    }
     std::printf("%s columns", solver.c_str());
     for (const float d : densities) std::printf(" %.0f", d);
     std::printf(": medians");
@@ -156,14 +170,18 @@ bool longTestsEnabled() { return std::getenv("TIDE_LONG_TESTS") != nullptr; }
 
 TEST(Multifluid, DfsphLayersDensityRatio25) { expectLayered(dropColumns("dfsph", {5000, 200}, 2.0f), 0.001); }
 TEST(Multifluid, DfsphLayersDensityRatio5) { expectLayered(dropColumns("dfsph", {1000, 200}, 2.0f), 0.001); }
-TEST(Multifluid, DfsphLayersThreeMaterials) { expectLayered(dropColumns("dfsph", {5000, 1000, 200}, 2.0f), 0.001); }
+// Three layers settle later: after the first slump the 1000/200 interface sloshes back, and
+// the fraction on its wrong side went 0.05 at 1.5 s, 0.10–0.105 at 2 s, 0.06–0.08 at 2.5 s,
+// 0.02–0.06 at 3 s (slabs of two and three layers, temporary driver, 2026-12-02); at 2 s the
+// test sampled the slosh's peak.
+TEST(Multifluid, DfsphLayersThreeMaterials) { expectLayered(dropColumns("dfsph", {5000, 1000, 200}, 3.0f), 0.001); }
 TEST(Multifluid, PcisphLayersDensityRatio25) {
     TIDE_SKIP_UNLESS_LONG();
     expectLayered(dropColumns("pcisph", {5000, 200}, 2.0f), 0.001);
 }
 TEST(Multifluid, PcisphLayersThreeMaterials) {
     TIDE_SKIP_UNLESS_LONG();
-    expectLayered(dropColumns("pcisph", {5000, 1000, 200}, 2.0f), 0.001);
+    expectLayered(dropColumns("pcisph", {5000, 1000, 200}, 3.0f), 0.001);
 }
 // wcsph has no solver tolerance: c = 10 × the free-fall speed keeps compression near 1 %.
 TEST(Multifluid, WcsphLayersDensityRatio5) {

@@ -68,7 +68,7 @@ void DfsphBender2017::prepare(StepContext& ctx) {
             glm::vec4 sums(0.0f);
             float rho = pair_sums::kernelSumAndCodes(fluidPairs(ctx, i), positionMass_.data(), xi, w, ctx.periodic,
                                                      positionMass_[i].w * self, fluidF_, fluidF_.of(ctx.neighbors, i).data(),
-                                                     pairOrder(), uniform ? &sums : nullptr);
+                                                     pair_sums::Order::Lanes, uniform ? &sums : nullptr);
             if (uniform) {
                 fluidGradient_[i] = fluidF_.unit() * glm::vec3(sums);
                 alpha_[i] = fluidF_.unit() * fluidF_.unit() * sums.w;
@@ -144,7 +144,7 @@ float DfsphBender2017::densityRate(const StepContext& ctx, std::uint32_t i) cons
     const glm::vec3 vi = p.velocity[i];
     // Σ_j m_j (v_i − v_j)·∇W_ij, in units of PairKernels::unit()
     float rate = fluidF_.unit() * pair_sums::divergenceSum(fluidPairs(ctx, i), positionMass_.data(), positionK_.data(),
-                                                          xi, vi, ctx.periodic, pairOrder());
+                                                          xi, vi, ctx.periodic);
     if (!contrast_.uniform()) rate *= p.mass[i];  // m_i Σ_j v_ij·∇W_ij: Dρ_i/Dt of ρ_i = m_i δ_i
     // Walls: Σ_b Ψ_b (v_i − v_b)·∇W_ib, the v_b part kept from computeAlpha.
     const float wall = ctx.boundary.moving ? glm::dot(vi, wallGradient_[i]) - wallVelocityRate_[i]
@@ -157,7 +157,7 @@ float DfsphBender2017::predictedDensity(const StepContext& ctx, PairVector delta
                                         std::uint32_t i) const {
     const glm::vec3 xi(positionK_[i]);
     float rho = pair_sums::kernelSum(fluidPairs(ctx, i), positionK_.data(), xi, w, ctx.periodic,
-                                     positionK_[i].w * w.value(0.0f), pairOrder());
+                                     positionK_[i].w * w.value(0.0f));
     if (!contrast_.uniform()) rho *= ctx.particles.mass[i];  // m_i δ*_i
     float volume = 0.0f;
     const glm::vec3* wallX = ctx.boundary.moving ? wallMoved_.data() : ctx.boundary.position.data();
@@ -183,7 +183,7 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
             const glm::vec3 xi = p.position[i];
             // Σ_j (k_i m_i/ρ_i + k_j (m_j/m_i) m_j/ρ_j) ∇W_ij = (k_i/ρ_i) m_i Σ_j ∇W_ij + (1/m_i) Σ_j (m_j² k_j/ρ_j) ∇W_ij
             const float unit = uniform ? fluidF_.unit() : fluidF_.unit() / p.mass[i];
-            const glm::vec3 sum = unit * pair_sums::gradientSum(fluidPairs(ctx, i), positionK_.data(), xi, ctx.periodic, pairOrder());
+            const glm::vec3 sum = unit * pair_sums::gradientSum(fluidPairs(ctx, i), positionK_.data(), xi, ctx.periodic);
             const glm::vec3 dv = (k_[i] / p.density[i]) * fluidGradient_[i] + sum;
             // Σ_b Ψ_b (κ_i/ρ_i + κ_b/ρ_b) ∇W_ib with Ψ_b = ρ0 V_b, ρ_b = ρ_i; κ_b = κ_i when mirrored.
             const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
@@ -434,7 +434,7 @@ double DfsphBender2017::step(StepContext& ctx) {
         // XSPH is a non-pressure force too: smoothing after the density solve would undo part of it.
         ctx.lap(Phase::Integration);
         // positionK_ is free until the density solve predicts positions into it.
-        // One rest density: in SIMD lanes over the (x_j, m_j) rows (the scalar order otherwise, as pairOrder).
+        // One rest density: in SIMD lanes over the (x_j, m_j) rows (a scalar loop with several).
         xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
                     ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads, positionK_,
                     contrast_.uniform() ? positionMass_.data() : nullptr);

@@ -56,14 +56,6 @@ private:
     [[nodiscard]] pair_sums::Neighbors fluidPairs(const StepContext& ctx, std::uint32_t i) const {
         return pair_sums::Neighbors(ctx.neighbors.of(i), fluidF_.of(ctx.neighbors, i).data());
     }
-    /// SIMD lanes for one rest density. With several, the sums keep the scalar loops' order:
-    /// the 5:1 column drop of tests/test_multifluid.cpp clumps pairs of light particles at
-    /// its surface (0.88 spacings apart at 0.02 s, 0.32 at 0.06 s; the closest pair 0.09 at
-    /// 0.086 s) and runs into a density solve that does not converge at 0.088 s whichever the order; with the lanes' rounding (AVX2, AVX-512)
-    /// the retaken steps then diverge, with the scalar or SSE4 rounding they recover.
-    [[nodiscard]] pair_sums::Order pairOrder() const {
-        return contrast_.uniform() ? pair_sums::Order::Lanes : pair_sums::Order::Sequential;
-    }
     /// Σ_j m_j (v_i − v_j)·∇W_ij + Σ_b Ψ_b (v_i − v_b)·∇W_ib: the rate of change of ρ_i.
     [[nodiscard]] float densityRate(const StepContext& ctx, std::uint32_t i) const;
     /// ρ*_i: the density at the predicted positions positionK_ holds (x + Δt v), over this step's
