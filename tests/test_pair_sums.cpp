@@ -70,7 +70,8 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
         const pair_sums::Neighbors neighbors(asOffsets ? NeighborSpan(offsets.data(), i, n) : NeighborSpan(indices.data(), n),
                                              codes.data());
         double kernel = 0.0, kernelScale = 0.0, divergence = 0.0, divergenceScale = 0.0;
-        glm::dvec3 gradient(0.0), gradientScale(0.0), viscous(0.0), viscousScale(0.0);
+        glm::dvec3 gradient(0.0), gradientScale(0.0), viscous(0.0), viscousScale(0.0), harmonic(0.0), harmonicScale(0.0);
+        const double mui = cloud.points[i].w;  // the harmonic sum reads the points' weights as viscosities
         double squares = 0.0;
         glm::dvec3 xsph(0.0), xsphScale(0.0);
         const kernels::Poly6 poly6(w.h);
@@ -94,6 +95,10 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
                                      glm::dvec3(vi - glm::vec3(cloud.velocities[j]));
             viscous += shear;
             viscousScale += glm::abs(shear);
+            const double muj = cloud.points[j].w;
+            const glm::dvec3 mixed = (4.0 * mui * muj / (mui + muj) / wj) * shear;  // μ̄_ij in place of w_j
+            harmonic += mixed;
+            harmonicScale += glm::abs(mixed);
             const double reach = std::max(double{poly6.h2} - glm::dot(r, r), 0.0);
             const glm::dvec3 smoothing = (2.0 * wj / (double{cloud.velocities[i].w} + cloud.velocities[j].w) * reach * reach * reach) *
                                          glm::dvec3(glm::vec3(cloud.velocities[j]) - vi);
@@ -105,6 +110,21 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
                                                   static_cast<float>(epsilon), box);
         for (int axis = 0; axis < 3; ++axis)
             EXPECT_NEAR(v[axis], viscous[axis], 1e-5 * viscousScale[axis] + 1e-12) << count << " neighbours";
+        const glm::vec3 mixed = pair_sums::viscousSumHarmonic(neighbors, cloud.points.data(), cloud.velocities.data(), xi, vi,
+                                                              static_cast<float>(mui), w, static_cast<float>(epsilon), box);
+        for (int axis = 0; axis < 3; ++axis)
+            EXPECT_NEAR(mixed[axis], harmonic[axis], 1e-5 * harmonicScale[axis] + 1e-12) << count << " neighbours";
+        // An inviscid particle feels no viscous pair (μ̄_ij = 0), and among inviscid ones 0/0 adds nothing (no NaN).
+        EXPECT_EQ(pair_sums::viscousSumHarmonic(neighbors, cloud.points.data(), cloud.velocities.data(), xi, vi, 0.0f, w,
+                                                static_cast<float>(epsilon), box),
+                  glm::vec3(0.0f))
+            << count << " neighbours";
+        std::vector<glm::vec4> inviscid = cloud.points;
+        for (glm::vec4& point : inviscid) point.w = 0.0f;
+        EXPECT_EQ(pair_sums::viscousSumHarmonic(neighbors, inviscid.data(), cloud.velocities.data(), xi, vi, 0.0f, w,
+                                                static_cast<float>(epsilon), box),
+                  glm::vec3(0.0f))
+            << count << " neighbours";
         glm::dvec3 plain(0.0), weighted(0.0), plainScale(0.0), weightedScale(0.0);
         for (std::size_t k = 0; k < count; ++k) {
             const std::uint32_t j = candidates[k];

@@ -230,11 +230,15 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
         k_[i] = kWarmStart * p.warmDivergence[i];
         p.warmDivergence[i] = k_[i];
     });
-    // Applies k_, then packs the velocities as (v_j, 1/ρ_j) rows into positionK_ (free until
-    // the next applyPressure) for densityRate's SIMD loads, and the viscosity's after the solve.
+    // Applies k_, then packs the velocities as (v_j, 1/ρ_j) rows, (v_j, m_j/ρ_j) with several rest
+    // densities, into positionK_ (free until the next applyPressure) for densityRate's SIMD
+    // loads, and the viscosity's after the solve.
+    const bool uniform = contrast_.uniform();
     auto push = [&] {
         applyPressure(ctx, {});
-        parallelFor(n, ctx.threads, [&](std::uint32_t i) { positionK_[i] = glm::vec4(p.velocity[i], 1.0f / p.density[i]); });
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+            positionK_[i] = glm::vec4(p.velocity[i], (uniform ? 1.0f : p.mass[i]) / p.density[i]);
+        });
     };
     push();
     const int minimum = ctx.solver.minDivergenceIterations >= 0 ? ctx.solver.minDivergenceIterations : ctx.solver.minIterations;
@@ -380,13 +384,23 @@ double DfsphBender2017::step(StepContext& ctx) {
     ctx.lap(Phase::PressureSolve);
 
     // Straight into the particles' acceleration, which the step reports: no copy of it kept.
-    // The divergence solve left (v_j, 1/ρ_j) in positionK_ (one rest density: (x_j, m_j) rows).
-    if (contrast_.uniform()) {
+    // The divergence solve left (v_j, 1/ρ_j) in positionK_ for one rest density, next to the
+    // (x_j, m_j) rows; with several, (v_j, m_j/ρ_j), next to (x_j, μ_j) rows packed here.
+    const bool uniform = contrast_.uniform();
+    if (uniform) {
         ctx.positionMassRows = positionMass_.data();
-        ctx.velocityRows = positionK_.data();
+    } else {
+        mixedRows_.resize(n);
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+            mixedRows_[i] = glm::vec4(p.position[i], ctx.materials[p.material[i]].viscosity);
+        });
+        ctx.viscosityRows = mixedRows_.data();
     }
+    ctx.velocityRows = positionK_.data();
     const float tensionAccel = sph::addNonPressureForces(ctx, p.acceleration);
-    ctx.positionMassRows = ctx.velocityRows = nullptr;
+    ctx.positionMassRows = ctx.velocityRows = ctx.viscosityRows = nullptr;
+    // XSPH's (x_j, m_j) rows with several rest densities (positionMass_ holds (x_j, 1) then).
+    if (!uniform) parallelFor(n, ctx.threads, [&](std::uint32_t i) { mixedRows_[i].w = p.mass[i]; });
     ctx.lap(Phase::NonPressureForces);
     // The step limits from a given max_dt: explicit forces, a density contrast, pressure speed.
     const float pressureSpeed = sph::pressureSpeedStep(ctx);
@@ -434,10 +448,10 @@ double DfsphBender2017::step(StepContext& ctx) {
         // XSPH is a non-pressure force too: smoothing after the density solve would undo part of it.
         ctx.lap(Phase::Integration);
         // positionK_ is free until the density solve predicts positions into it.
-        // One rest density: in SIMD lanes over the (x_j, m_j) rows (a scalar loop with several).
+        // In SIMD lanes over the (x_j, m_j) rows.
         xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
                     ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads, positionK_,
-                    contrast_.uniform() ? positionMass_.data() : nullptr);
+                    uniform ? positionMass_.data() : mixedRows_.data());
         ctx.lap(Phase::NonPressureForces);
         densityIterations += solveDensity(ctx, dtTry, static_cast<float>(driftTime));
         ctx.lap(Phase::PressureSolve);

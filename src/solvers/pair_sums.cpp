@@ -103,16 +103,27 @@ float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const g
     return sum;
 }
 
-template <bool Periodic>
+/// The viscous sums' pair weight: w_j u_j, or with Harmonic (w_j = μ_j) 4 μ_i μ_j/(μ_i + μ_j) u_j.
+template <bool Harmonic>
+float viscousWeight(float wj, float uj, float mui) {
+    if constexpr (Harmonic) {
+        const float sum = mui + wj;
+        return sum > 0.0f ? 4.0f * mui * wj / sum * uj : 0.0f;
+    }
+    return wj * uj;
+}
+
+template <bool Periodic, bool Harmonic = false>
 glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
-                     const PeriodicBox& box) {
+                     const PeriodicBox& box, float mui = 0.0f) {
     glm::vec3 sum(0.0f);
     for (std::size_t k = 0; k < neighbors.count; ++k) {
         const std::uint32_t j = neighbors.at(k);
         const glm::vec3 d = delta<Periodic>(xi, points[j], box);
         const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-        sum += (points[j].w * velocities[j].w * r * w.derivative(r) / (r * r + epsilon)) * (vi - glm::vec3(velocities[j]));
+        sum += (viscousWeight<Harmonic>(points[j].w, velocities[j].w, mui) * r * w.derivative(r) / (r * r + epsilon)) *
+               (vi - glm::vec3(velocities[j]));
     }
     return sum;
 }
@@ -178,11 +189,11 @@ template <bool Periodic, bool Offsets>
 glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, const PeriodicBox& box) {
     return sequential::gradientSum<Periodic>(neighbors, points, xi, box);
 }
-template <bool Periodic, bool Offsets>
+template <bool Periodic, bool Offsets, bool Harmonic>
 glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                       const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
-                      const PeriodicBox& box) {
-    return sequential::viscousSum<Periodic>(neighbors, points, velocities, xi, vi, w, epsilon, box);
+                      const PeriodicBox& box, float mui) {
+    return sequential::viscousSum<Periodic, Harmonic>(neighbors, points, velocities, xi, vi, w, epsilon, box, mui);
 }
 template <bool Periodic, bool Offsets>
 float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
@@ -421,15 +432,15 @@ float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const 
     return hn::GetLane(hn::SumOfLanes(d, sum));
 }
 
-template <bool Periodic, bool Offsets>
+template <bool Periodic, bool Offsets, bool Harmonic>
 glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                       const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
-                      const PeriodicBox& box) {
+                      const PeriodicBox& box, float mui) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
     const V vx = hn::Set(d, vi.x), vy = hn::Set(d, vi.y), vz = hn::Set(d, vi.z);
     const V invH = hn::Set(d, w.invH), zero = hn::Zero(d);
-    const V eps = hn::Set(d, epsilon);
+    const V eps = hn::Set(d, epsilon), muI = hn::Set(d, mui), fourMuI = hn::Set(d, 4.0f * mui);
     V sx = zero, sy = zero, sz = zero;
     for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
         const Columns j = LoadRows<Offsets>(points, neighbors, k);
@@ -439,7 +450,14 @@ glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const
         const V q = hn::Mul(hn::Sqrt(r2), invH);
         // r W'(r) h/σ = q (24(½ − q)₊² − 6(1 − q)₊²) h², the σ/h² outside the sum
         const V rDerivative = hn::Mul(q, DerivativeOverSigma(q));
-        const V weight = hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), hn::Mul(j.w, v.w));
+        V weight;
+        if constexpr (Harmonic) {  // 4 μ_i μ_j/(μ_i + μ_j) u_j, masked after the division (0/0 where both are 0)
+            const V sum = hn::Add(muI, j.w);
+            weight = hn::IfThenElseZero(hn::And(hn::FirstN(d, neighbors.count - k), hn::Gt(sum, zero)),
+                                        hn::Mul(hn::Div(hn::Mul(fourMuI, j.w), sum), v.w));
+        } else {
+            weight = hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), hn::Mul(j.w, v.w));
+        }
         const V s = hn::Div(hn::Mul(weight, rDerivative), hn::Add(r2, eps));
         sx = hn::MulAdd(s, hn::Sub(vx, v.x), sx);
         sy = hn::MulAdd(s, hn::Sub(vy, v.y), sy);
@@ -541,7 +559,14 @@ glm::vec3 ViscousSumImpl(const Neighbors& neighbors, const glm::vec4* points, co
                          const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
                          const PeriodicBox& box) {
     return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
-        return ViscousSumT<periodic(), offsets()>(neighbors, points, velocities, xi, vi, w, epsilon, box);
+        return ViscousSumT<periodic(), offsets(), false>(neighbors, points, velocities, xi, vi, w, epsilon, box, 0.0f);
+    });
+}
+glm::vec3 ViscousSumHarmonicImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                                 const glm::vec3& xi, const glm::vec3& vi, float mui, const kernels::CubicSpline& w,
+                                 float epsilon, const PeriodicBox& box) {
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        return ViscousSumT<periodic(), offsets(), true>(neighbors, points, velocities, xi, vi, w, epsilon, box, mui);
     });
 }
 glm::vec3 XsphSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
@@ -570,6 +595,7 @@ HWY_EXPORT(KernelSumAndCodesImpl);
 HWY_EXPORT(GradientSumImpl);
 HWY_EXPORT(DivergenceSumImpl);
 HWY_EXPORT(ViscousSumImpl);
+HWY_EXPORT(ViscousSumHarmonicImpl);
 HWY_EXPORT(XsphSumImpl);
 HWY_EXPORT(KernelGradientSumsImpl);
 HWY_EXPORT(InstructionSetImpl);
@@ -585,6 +611,7 @@ struct Targets {
     decltype(&HWY_STATIC_DISPATCH(GradientSumImpl)) gradientSum;
     decltype(&HWY_STATIC_DISPATCH(DivergenceSumImpl)) divergenceSum;
     decltype(&HWY_STATIC_DISPATCH(ViscousSumImpl)) viscousSum;
+    decltype(&HWY_STATIC_DISPATCH(ViscousSumHarmonicImpl)) viscousSumHarmonic;
     decltype(&HWY_STATIC_DISPATCH(XsphSumImpl)) xsphSum;
     decltype(&HWY_STATIC_DISPATCH(KernelGradientSumsImpl)) kernelGradientSums;
 };
@@ -592,8 +619,8 @@ Targets chooseTargets() {
     (void)HWY_DYNAMIC_DISPATCH(InstructionSetImpl)();  // a first dispatch chooses the target
     return Targets{&HWY_DYNAMIC_DISPATCH(KernelSumImpl),   &HWY_DYNAMIC_DISPATCH(KernelSumAndCodesImpl),
                    &HWY_DYNAMIC_DISPATCH(GradientSumImpl), &HWY_DYNAMIC_DISPATCH(DivergenceSumImpl),
-                   &HWY_DYNAMIC_DISPATCH(ViscousSumImpl),  &HWY_DYNAMIC_DISPATCH(XsphSumImpl),
-                   &HWY_DYNAMIC_DISPATCH(KernelGradientSumsImpl)};
+                   &HWY_DYNAMIC_DISPATCH(ViscousSumImpl),  &HWY_DYNAMIC_DISPATCH(ViscousSumHarmonicImpl),
+                   &HWY_DYNAMIC_DISPATCH(XsphSumImpl),     &HWY_DYNAMIC_DISPATCH(KernelGradientSumsImpl)};
 }
 // Chosen when the program loads (no sums run before main), so a call reads a plain global.
 const Targets kTargets = chooseTargets();
@@ -633,6 +660,11 @@ glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const 
                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
                      const PeriodicBox& box) {
     return targets().viscousSum(neighbors, points, velocities, xi, vi, w, epsilon, box);
+}
+glm::vec3 viscousSumHarmonic(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                             const glm::vec3& xi, const glm::vec3& vi, float mui, const kernels::CubicSpline& w,
+                             float epsilon, const PeriodicBox& box) {
+    return targets().viscousSumHarmonic(neighbors, points, velocities, xi, vi, mui, w, epsilon, box);
 }
 glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
                   const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {

@@ -82,6 +82,13 @@ glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const 
                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
                      const PeriodicBox& box);
 
+/// viscousSum between materials of different viscosities: Σ_j μ̄_ij u_j r W'(r)/(r² + ε) (v_i − v_j),
+/// with (x_j, μ_j) = points[j], (v_j, u_j) = velocities[j] and μ̄_ij = 4 μ_i μ_j/(μ_i + μ_j) (0 where
+/// both are 0): twice the pair's harmonic mean, 2μ for equal viscosities (solvers/viscosity.cpp).
+glm::vec3 viscousSumHarmonic(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
+                             const glm::vec3& xi, const glm::vec3& vi, float mui, const kernels::CubicSpline& w,
+                             float epsilon, const PeriodicBox& box);
+
 /// Σ_j (2 w_j/(u_i + u_j)) (h² − r²)₊³ (v_j − v_i), r = |x_i − x_j|, with (x_j, w_j) = points[j]
 /// and (v_j, u_j) = velocities[j]: XSPH's sum (Monaghan 1989) with w = m and u = ρ, over the
 /// poly6 kernel `w` less its normalisation (xsph_monaghan1989.hpp).

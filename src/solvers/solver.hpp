@@ -49,9 +49,11 @@ struct StepContext {
     PhaseClock* clock = nullptr;  ///< where a solver books the phases of its step (may be null)
     const MaterialPairs* pairs = nullptr;  ///< per-pair diffusivity and surface tension (may be null: none)
     /// Fluid rows a solver keeps packed for the SIMD pair sums (solvers/pair_sums.hpp), current
-    /// while it computes the non-pressure forces, or null: (x_j, m_j) and (v_j, 1/ρ_j).
+    /// while it computes the non-pressure forces, or null: (x_j, m_j) and (v_j, 1/ρ_j); or,
+    /// with several rest densities, (x_j, μ_j) as viscosityRows and (v_j, m_j/ρ_j).
     const glm::vec4* positionMassRows = nullptr;
     const glm::vec4* velocityRows = nullptr;
+    const glm::vec4* viscosityRows = nullptr;
 
     /// x_a − x_b to the nearest periodic image: every pair vector of a solver, fluid–fluid
     /// and fluid–boundary, goes through this (the plain difference without periodic axes).

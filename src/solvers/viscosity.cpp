@@ -91,7 +91,8 @@ void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
     const ParticleStore& p = ctx.particles;
     const kernels::CubicSpline w(ctx.supportRadius);
     const float h2 = ctx.supportRadius * ctx.supportRadius * 0.25f;  // smoothing length = support / 2
-    // One viscosity and the solver's packed rows: the fluid sum in SIMD lanes, 2μ Σ_j (m_j/ρ_j) f (v_i − v_j).
+    // One viscosity and the solver's packed rows: the fluid sum in SIMD lanes, 2μ Σ_j (m_j/ρ_j) f (v_i − v_j);
+    // with viscosityRows, Σ_j (m_j/ρ_j) μ̄_ij f (v_i − v_j) (μ̄_ij = 2μ within rounding where they are equal).
     const bool lanes = ctx.positionMassRows && ctx.velocityRows &&
                        std::all_of(ctx.materials.begin(), ctx.materials.end(),
                                    [&](const MaterialDef& m) { return m.viscosity == ctx.materials.front().viscosity; });
@@ -104,6 +105,9 @@ void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
             const auto neighbors = ctx.neighbors.of(i);
             sum = (2.0f * mui) * pair_sums::viscousSum(pair_sums::Neighbors(neighbors), ctx.positionMassRows,
                                                        ctx.velocityRows, xi, vi, w, 0.01f * h2, ctx.periodic);
+        } else if (ctx.viscosityRows && ctx.velocityRows) {
+            sum = pair_sums::viscousSumHarmonic(pair_sums::Neighbors(ctx.neighbors.of(i)), ctx.viscosityRows, ctx.velocityRows,
+                                                xi, vi, mui, w, 0.01f * h2, ctx.periodic);
         } else {
             for (const std::uint32_t j : ctx.neighbors.of(i)) {
                 const glm::vec3 rij = ctx.delta(xi, p.position[j]);
