@@ -72,7 +72,8 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
         double kernel = 0.0, kernelScale = 0.0, divergence = 0.0, divergenceScale = 0.0;
         glm::dvec3 gradient(0.0), gradientScale(0.0), viscous(0.0), viscousScale(0.0), harmonic(0.0), harmonicScale(0.0);
         const double mui = cloud.points[i].w;  // the harmonic sum reads the points' weights as viscosities
-        double squares = 0.0;
+        double squares = 0.0, cappedSquares = 0.0;
+        glm::dvec3 plainGradient(0.0), plainGradientScale(0.0);
         glm::dvec3 xsph(0.0), xsphScale(0.0);
         const kernels::Poly6 poly6(w.h);
         const double epsilon = 0.01 * 0.25 * h * h;
@@ -86,6 +87,9 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
             gradient += wj * m * r;
             gradientScale += glm::abs(wj * m * r);
             squares += glm::dot(wj * m * r, wj * m * r);
+            plainGradient += m * r;
+            plainGradientScale += glm::abs(m * r);
+            cappedSquares += std::max(mui / wj, 1.0) * glm::dot(m * r, m * r);
             const double rate = wj * m * glm::dot(glm::dvec3(vi - glm::vec3(cloud.velocities[j])), r);
             divergence += rate;
             divergenceScale += std::abs(rate);
@@ -110,6 +114,12 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
                                                   static_cast<float>(epsilon), box);
         for (int axis = 0; axis < 3; ++axis)
             EXPECT_NEAR(v[axis], viscous[axis], 1e-5 * viscousScale[axis] + 1e-12) << count << " neighbours";
+        // α's sums with other masses: the points' weights as masses, i's own as m_i.
+        const glm::vec4 capped =
+            pair_sums::cappedGradientSquares(neighbors, cloud.points.data(), xi, static_cast<float>(mui), box);
+        for (int axis = 0; axis < 3; ++axis)
+            EXPECT_NEAR(capped[axis], plainGradient[axis], 1e-5 * plainGradientScale[axis] + 1e-12) << count << " neighbours";
+        EXPECT_NEAR(capped.w, cappedSquares, 1e-5 * cappedSquares + 1e-12) << count << " neighbours";
         const glm::vec3 mixed = pair_sums::viscousSumHarmonic(neighbors, cloud.points.data(), cloud.velocities.data(), xi, vi,
                                                               static_cast<float>(mui), w, static_cast<float>(epsilon), box);
         for (int axis = 0; axis < 3; ++axis)

@@ -54,6 +54,11 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         positionMass_[i] = glm::vec4(p.position[i], uniform ? p.mass[i] : 1.0f);
     });
+    // With a density contrast, (x_j, m_j) rows for α (computeAlpha) as well.
+    if (!uniform) {
+        mixedRows_.resize(n);
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) { mixedRows_[i] = glm::vec4(p.position[i], p.mass[i]); });
+    }
     fluidF_.resize(ctx.neighbors, w);
     wallF_.resize(ctx.boundaryNeighbors, w);
     alpha_.resize(n);
@@ -105,16 +110,15 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
             fluidGrad = fluidGradient_[i];
             sumSquares = alpha_[i];
         } else {
-            const PairKernels::Code* f = fluidF_.of(ctx.neighbors, i).data();
-            for (const std::uint32_t j : ctx.neighbors.of(i)) {
-                const glm::vec3 g = (mi * fluidF_.factor(*f++)) * ctx.delta(xi, p.position[j]);
-                fluidGrad += g;
-                // The exact factor is m_i/m_j; for a light i among heavy j it makes i's diagonal
-                // tiny next to the terms through its light neighbours, and the Jacobi iteration
-                // diverges (a 25:1 column drop went to NaN within 0.1 s, measured). Capping it
-                // below at 1 under-relaxes exactly those rows; one mass gives 1 either way.
-                sumSquares += std::max(mi / p.mass[j], 1.0f) * glm::dot(g, g);
-            }
+            // The exact factor is m_i/m_j; for a light i among heavy j it makes i's diagonal
+            // tiny next to the terms through its light neighbours, and the Jacobi iteration
+            // diverges (a 25:1 column drop went to NaN within 0.1 s, measured). Capping it
+            // below at 1 under-relaxes exactly those rows; one mass gives 1 either way.
+            // In SIMD lanes over the (x_j, m_j) rows prepare() packed.
+            const glm::vec4 sums = pair_sums::cappedGradientSquares(fluidPairs(ctx, i), mixedRows_.data(), xi, mi, ctx.periodic);
+            const float unit = mi * fluidF_.unit();
+            fluidGrad = unit * glm::vec3(sums);
+            sumSquares = unit * unit * sums.w;
         }
         const PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
         float wallRate = 0.0f;
@@ -390,10 +394,7 @@ double DfsphBender2017::step(StepContext& ctx) {
     if (uniform) {
         ctx.positionMassRows = positionMass_.data();
     } else {
-        mixedRows_.resize(n);
-        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            mixedRows_[i] = glm::vec4(p.position[i], ctx.materials[p.material[i]].viscosity);
-        });
+        parallelFor(n, ctx.threads, [&](std::uint32_t i) { mixedRows_[i].w = ctx.materials[p.material[i]].viscosity; });
         ctx.viscosityRows = mixedRows_.data();
     }
     ctx.velocityRows = positionK_.data();

@@ -99,7 +99,7 @@ private:
     std::vector<glm::vec3> wallGradient_;    ///< Σ_b V_b ∇W_ib
     std::vector<float> wallVelocityRate_;    ///< Σ_b V_b v_b·∇W_ib (moving walls only)
     std::vector<glm::vec4> positionMass_;    ///< (x_j, m_j); (x_j, 1) with a density contrast
-    /// With a density contrast only: (x_j, μ_j) for the viscosity, then (x_j, m_j) for XSPH
+    /// With a density contrast only: (x_j, m_j) for α, (x_j, μ_j) for the viscosity, then (x_j, m_j) for XSPH
     std::vector<glm::vec4> mixedRows_;
     /// (x_j, m_j k_j/ρ_j) of one iteration; in the density solve, between an iteration's start
     /// and its κ update, the predicted (x_j + Δt v_j, m_j), and in the divergence solve between

@@ -92,6 +92,18 @@ glm::vec4 gradientAndSquaresSum(const Neighbors& neighbors, const glm::vec4* poi
 }
 
 template <bool Periodic>
+glm::vec4 cappedGradientSquares(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, float mi,
+                                const PeriodicBox& box) {
+    glm::vec4 sums(0.0f);
+    for (std::size_t k = 0; k < neighbors.count; ++k) {
+        const glm::vec4 xj = points[neighbors.at(k)];
+        const glm::vec3 g = PairKernels::magnitude(neighbors.code[k]) * delta<Periodic>(xi, xj, box);
+        sums += glm::vec4(g, std::max(mi / xj.w, 1.0f) * glm::dot(g, g));
+    }
+    return sums;
+}
+
+template <bool Periodic>
 float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     float sum = 0.0f;
@@ -199,6 +211,11 @@ template <bool Periodic, bool Offsets>
 float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                      const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box) {
     return sequential::divergenceSum<Periodic>(neighbors, points, velocities, xi, vi, box);
+}
+template <bool Periodic, bool Offsets>
+glm::vec4 CappedGradientSquaresT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, float mi,
+                                 const PeriodicBox& box) {
+    return sequential::cappedGradientSquares<Periodic>(neighbors, points, xi, mi, box);
 }
 template <bool Periodic, bool Offsets>
 glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities, const glm::vec3& xi,
@@ -432,6 +449,28 @@ float DivergenceSumT(const Neighbors& neighbors, const glm::vec4* points, const 
     return hn::GetLane(hn::SumOfLanes(d, sum));
 }
 
+template <bool Periodic, bool Offsets>
+glm::vec4 CappedGradientSquaresT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, float mi,
+                                 const PeriodicBox& box) {
+    const D d;
+    const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
+    const V massI = hn::Set(d, mi), one = hn::Set(d, 1.0f);
+    V sx = hn::Zero(d), sy = hn::Zero(d), sz = hn::Zero(d), squares = hn::Zero(d);
+    for (std::size_t k = 0; k < neighbors.count; k += hn::Lanes(d)) {
+        const Columns j = LoadRows<Offsets>(points, neighbors, k);
+        const V m = LoadMagnitudes(neighbors, k);  // 0 past the list's end
+        const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
+        const V gx = hn::Mul(m, r.x), gy = hn::Mul(m, r.y), gz = hn::Mul(m, r.z);
+        sx = hn::Add(sx, gx);
+        sy = hn::Add(sy, gy);
+        sz = hn::Add(sz, gz);
+        const V g2 = hn::MulAdd(gx, gx, hn::MulAdd(gy, gy, hn::Mul(gz, gz)));
+        squares = hn::MulAdd(hn::Max(hn::Div(massI, j.w), one), g2, squares);
+    }
+    return {hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)), hn::GetLane(hn::SumOfLanes(d, sz)),
+            hn::GetLane(hn::SumOfLanes(d, squares))};
+}
+
 template <bool Periodic, bool Offsets, bool Harmonic>
 glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                       const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
@@ -555,6 +594,12 @@ float DivergenceSumImpl(const Neighbors& neighbors, const glm::vec4* points, con
         return DivergenceSumT<periodic(), offsets()>(neighbors, points, velocities, xi, vi, box);
     });
 }
+glm::vec4 CappedGradientSquaresImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, float mi,
+                                    const PeriodicBox& box) {
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        return CappedGradientSquaresT<periodic(), offsets()>(neighbors, points, xi, mi, box);
+    });
+}
 glm::vec3 ViscousSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                          const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
                          const PeriodicBox& box) {
@@ -594,6 +639,7 @@ HWY_EXPORT(KernelSumImpl);
 HWY_EXPORT(KernelSumAndCodesImpl);
 HWY_EXPORT(GradientSumImpl);
 HWY_EXPORT(DivergenceSumImpl);
+HWY_EXPORT(CappedGradientSquaresImpl);
 HWY_EXPORT(ViscousSumImpl);
 HWY_EXPORT(ViscousSumHarmonicImpl);
 HWY_EXPORT(XsphSumImpl);
@@ -610,6 +656,7 @@ struct Targets {
     decltype(&HWY_STATIC_DISPATCH(KernelSumAndCodesImpl)) kernelSumAndCodes;
     decltype(&HWY_STATIC_DISPATCH(GradientSumImpl)) gradientSum;
     decltype(&HWY_STATIC_DISPATCH(DivergenceSumImpl)) divergenceSum;
+    decltype(&HWY_STATIC_DISPATCH(CappedGradientSquaresImpl)) cappedGradientSquares;
     decltype(&HWY_STATIC_DISPATCH(ViscousSumImpl)) viscousSum;
     decltype(&HWY_STATIC_DISPATCH(ViscousSumHarmonicImpl)) viscousSumHarmonic;
     decltype(&HWY_STATIC_DISPATCH(XsphSumImpl)) xsphSum;
@@ -619,6 +666,7 @@ Targets chooseTargets() {
     (void)HWY_DYNAMIC_DISPATCH(InstructionSetImpl)();  // a first dispatch chooses the target
     return Targets{&HWY_DYNAMIC_DISPATCH(KernelSumImpl),   &HWY_DYNAMIC_DISPATCH(KernelSumAndCodesImpl),
                    &HWY_DYNAMIC_DISPATCH(GradientSumImpl), &HWY_DYNAMIC_DISPATCH(DivergenceSumImpl),
+                   &HWY_DYNAMIC_DISPATCH(CappedGradientSquaresImpl),
                    &HWY_DYNAMIC_DISPATCH(ViscousSumImpl),  &HWY_DYNAMIC_DISPATCH(ViscousSumHarmonicImpl),
                    &HWY_DYNAMIC_DISPATCH(XsphSumImpl),     &HWY_DYNAMIC_DISPATCH(KernelGradientSumsImpl)};
 }
@@ -655,6 +703,10 @@ float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const g
         return box.any ? sequential::divergenceSum<true>(neighbors, points, velocities, xi, vi, box)
                        : sequential::divergenceSum<false>(neighbors, points, velocities, xi, vi, box);
     return targets().divergenceSum(neighbors, points, velocities, xi, vi, box);
+}
+glm::vec4 cappedGradientSquares(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, float mi,
+                                const PeriodicBox& box) {
+    return targets().cappedGradientSquares(neighbors, points, xi, mi, box);
 }
 glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,

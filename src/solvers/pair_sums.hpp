@@ -75,6 +75,13 @@ glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const
 float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box, Order order = Order::Lanes);
 
+/// (Σ_j g_ij, Σ_j max(μ/w_j, 1) |g_ij|²), g_ij = m_ij (x_i − x_j) with m_ij as above and
+/// (x_j, w_j) = points[j]: with w_j = m_j and μ = m_i, DFSPH's α sums over neighbours of
+/// other masses (several rest densities, DfsphBender2017::computeAlpha), the factor m_i/m_j
+/// capped below at 1, in units of PairKernels::unit() and without the m_i and m_i² there.
+glm::vec4 cappedGradientSquares(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, float mi,
+                                const PeriodicBox& box);
+
 /// Σ_j w_j u_j r W'(r)/(r² + ε) (v_i − v_j) of the cubic spline `w`, r = |x_i − x_j|, with
 /// (x_j, w_j) = points[j] and (v_j, u_j) = velocities[j]: the fluid part of Morris et al.'s
 /// 1997 viscosity (solvers/viscosity.cpp).
