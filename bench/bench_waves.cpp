@@ -7,7 +7,7 @@
 // ≥ 8 particles per wave height (spacing 0.005 m, ~0.5 M particles: hours on 2 cores).
 //
 //   tide_wave_bench [--spacing S] [--seconds T] [--threads N] [--csv FILE] [--reach W]
-//                   [--viscosity NAME] [--mu X] [--xsph E] [--momentum M] [--max-dt S]
+//                   [--solver NAME] [--viscosity NAME] [--mu X] [--xsph E] [--momentum M] [--max-dt S]
 //                   [--max-density-error E] [--max-iterations N] [--support-ratio R]
 #include <algorithm>
 #include <chrono>
@@ -56,9 +56,9 @@ int runFlume(float spacing, double seconds, int threads, int reach, const std::s
     std::vector<tide::waves::Record> records(at.size(), tide::waves::Record{0.02, 0.02, {}});
     std::printf("flume %.2f m, %u particles, spacing %.4f m (%.1f per wave height), lambda %.3f m, %.1f s\n", length,
                 world.particles().size(), spacing, H / spacing, lambda, seconds);
-    std::printf("viscosity %s, mu %g Pa s, xsph %g, momentum %g, max_dt %g s, max_density_error %g, max_iterations %d, "
+    std::printf("%s, viscosity %s, mu %g Pa s, xsph %g, momentum %g, max_dt %g s, max_density_error %g, max_iterations %d, "
                 "support ratio %g\n",
-                solver.viscosity.empty() ? "(solver's own)" : solver.viscosity.c_str(), water.viscosity, solver.xsph,
+                solver.method.c_str(), solver.viscosity.empty() ? "(solver's own)" : solver.viscosity.c_str(), water.viscosity, solver.xsph,
                 solver.momentum, solver.maxDt, solver.maxDensityError, solver.maxIterations, supportRatio);
     std::fflush(stdout);
     const auto start = std::chrono::steady_clock::now();
@@ -119,6 +119,9 @@ int main(int argc, char** argv) {
     app.add_option("--csv", csv, "also write the heights to this CSV file");
     app.add_option("--reach", reach, "gauges at 1, 3, 5, ... wavelengths up to this (the flume holds 2 more before its damping zone)")
         ->capture_default_str()->check(CLI::Range(1, 99));
+    app.add_option("--solver", solver.method, "solver.method (wcsph has no density solve to rebuild, but ~10x the steps)")
+        ->capture_default_str()
+        ->check(CLI::IsMember(tide::solverNames()));
     app.add_option("--viscosity", solver.viscosity, "solver.viscosity (empty: the solver's own)");
     app.add_option("--mu", water.viscosity, "the water's dynamic viscosity, Pa s")->capture_default_str()->check(CLI::NonNegativeNumber);
     app.add_option("--xsph", solver.xsph, "solver.xsph")->capture_default_str()->check(CLI::Range(0.0, 1.0));
