@@ -75,10 +75,10 @@ glm::vec3 gradientSum(const Neighbors& neighbors, const glm::vec4* points, const
 float divergenceSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
                     const glm::vec3& xi, const glm::vec3& vi, const PeriodicBox& box, Order order = Order::Lanes);
 
-/// (Σ_j g_ij, Σ_j max(μ/w_j, 1) |g_ij|²), g_ij = m_ij (x_i − x_j) with m_ij as above and
-/// (x_j, w_j) = points[j]: with w_j = m_j and μ = m_i, DFSPH's α sums over neighbours of
-/// other masses (several rest densities, DfsphBender2017::computeAlpha), the factor m_i/m_j
-/// capped below at 1, in units of PairKernels::unit() and without the m_i and m_i² there.
+/// (Σ_j g_ij, Σ_j max(m_i/w_j, 1) |g_ij|²), g_ij = m_ij (x_i − x_j) with m_ij as above and
+/// (x_j, w_j) = points[j]: with w_j = m_j, DFSPH's α sums over neighbours of other masses
+/// (several rest densities, DfsphBender2017::computeAlpha), the factor m_i/m_j capped below
+/// at 1, in units of PairKernels::unit() and without the m_i and m_i² there.
 glm::vec4 cappedGradientSquares(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, float mi,
                                 const PeriodicBox& box);
 
