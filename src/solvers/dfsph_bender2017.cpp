@@ -380,7 +380,8 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
 double DfsphBender2017::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
-    prepare(ctx);
+    prepare(ctx);  // sets contrast_
+    const bool uniform = contrast_.uniform();
     positionK_.resize(n);
     computeAlpha(ctx);
     ctx.lap(Phase::Density);
@@ -390,7 +391,6 @@ double DfsphBender2017::step(StepContext& ctx) {
     // Straight into the particles' acceleration, which the step reports: no copy of it kept.
     // The divergence solve left (v_j, 1/ρ_j) in positionK_ for one rest density, next to the
     // (x_j, m_j) rows; with several, (v_j, m_j/ρ_j), next to (x_j, μ_j) rows packed here.
-    const bool uniform = contrast_.uniform();
     if (uniform) {
         ctx.positionMassRows = positionMass_.data();
     } else {
@@ -407,7 +407,7 @@ double DfsphBender2017::step(StepContext& ctx) {
     const float pressureSpeed = sph::pressureSpeedStep(ctx);
     auto limitsFrom = [&](SolverDef base) {
         SolverDef limits = sph::explicitForceLimits(ctx, base, tensionAccel);
-        if (!contrast_.uniform())
+        if (!uniform)
             limits.maxDt = std::min(limits.maxDt, DensityContrast::timeStepLimit(ctx.materials, glm::length(ctx.gravity),
                                                                                   ctx.particleSpacing, ctx.solver.forceNumber));
         limits.maxDt = std::max(limits.minDt, std::min(limits.maxDt, pressureSpeed));
@@ -429,12 +429,12 @@ double DfsphBender2017::step(StepContext& ctx) {
     // quarter per good step. (One that only runs out of iterations is kept: at a shorter
     // step it needs as many, measured in a Rayleigh–Taylor box.) Measured: a 5:1 column drop in a thin box (two layers
     // between walls) ran into a diverging solve at 0.1 s without it. One rest density: one try.
-    if (!contrast_.uniform()) savedVelocity_ = p.velocity;
+    if (!uniform) savedVelocity_ = p.velocity;
     double dt = 0.0, driftTime = 0.0;
     int densityIterations = 0;
     for (;;) {
         SolverDef capped = limits, cappedDrift = driftLimits;
-        if (!contrast_.uniform()) {
+        if (!uniform) {
             capped.maxDt = std::max(limits.minDt, std::min(static_cast<float>(dtCap_), limits.maxDt));
             cappedDrift.maxDt = std::max(limits.minDt, std::min(static_cast<float>(dtCap_), driftLimits.maxDt));
         }
@@ -456,11 +456,11 @@ double DfsphBender2017::step(StepContext& ctx) {
         ctx.lap(Phase::NonPressureForces);
         densityIterations += solveDensity(ctx, dtTry, static_cast<float>(driftTime));
         ctx.lap(Phase::PressureSolve);
-        if (contrast_.uniform() || !densityDiverged_ || dt <= limits.minDt) break;
+        if (uniform || !densityDiverged_ || dt <= limits.minDt) break;
         dtCap_ = 0.5 * dt;
         p.velocity = savedVelocity_;
     }
-    if (!contrast_.uniform() && !densityDiverged_) dtCap_ = std::min(1.25 * dtCap_, static_cast<double>(limits.maxDt));
+    if (!uniform && !densityDiverged_) dtCap_ = std::min(1.25 * dtCap_, static_cast<double>(limits.maxDt));
     const auto dtf = static_cast<float>(dt);
     // The pressure reported is κ averaged over this step and the last, weighted by their
     // lengths: the momentum of the density solve leaves κ zigzagging from step to step (±15 %
