@@ -5,12 +5,16 @@
 // frequency compared with ω² = g k tanh kd. At L = 0.68 m, d = 0.3 m it has the wave number
 // of the acceptance flume's waves (T = 1 s), so its error predicts the flume's wave-length
 // error (Δλ/λ ≈ 1.47 Δω/ω there) in ~20 s instead of 12 min (docs/waves.md).
+// --periodic: the same mode in a tank periodic along x, one wave length (2L) long, without the
+// end walls the water slides along: the decay of the waves themselves, as in a flume.
 //
-//   tide_standing_wave [--solver dfsph] [--spacing 0.02] [--support-ratio 2] [--amplitude 0.01] ...
+//   tide_standing_wave [--solver dfsph] [--spacing 0.02] [--support-ratio 2] [--amplitude 0.01] [--periodic] ...
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+
+#include <glm/geometric.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -29,7 +33,14 @@ int main(int argc, char** argv) {
     tank.momentum = 0.0f;
     float amplitude = 0.01f;
     double seconds = 4.0;
+    bool periodic = false;
+    double settle = 0.0, energy = 0.0;
     tank.addTo(app);
+    app.add_option("--energy", energy, "print the mode, the kinetic and the total energy every this many s (0: not)")
+        ->check(CLI::NonNegativeNumber);
+    app.add_option("--settle", settle, "World::settle for this long first (pre-roll, velocities zeroed), s")
+        ->capture_default_str()->check(CLI::NonNegativeNumber);
+    app.add_flag("--periodic", periodic, "x periodic over one wave length (2 × length), no end walls");
     app.add_option("--amplitude", amplitude, "mode amplitude a, m")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--seconds", seconds, "simulated time, s")->capture_default_str()->check(CLI::PositiveNumber);
     CLI11_PARSE(app, argc, argv);
@@ -37,7 +48,10 @@ int main(int argc, char** argv) {
     const float length = tank.length, depth = tank.depth;
     const double g = 9.81, k = std::numbers::pi / length, omega = std::sqrt(g * k * std::tanh(k * depth));
     try {
-        tide::World world = tide::scenarios::stillTank(tank.worldDef(), length, depth, tank.widthInSpacings());
+        tide::World world = periodic ? tide::scenarios::periodicTank(tank.worldDef(), 2.0f * length, depth, tank.widthInSpacings())
+                                     : tide::scenarios::stillTank(tank.worldDef(), length, depth, tank.widthInSpacings());
+        const float extent = periodic ? 2.0f * length : length;
+        if (settle > 0.0) world.settle(settle);
         // Velocity potential φ = (aω / (k sinh kd)) cosh(ky) cos(kx) at t = 0 (y from the floor).
         const auto& p = world.particles();
         auto v = world.velocities();
@@ -50,26 +64,38 @@ int main(int argc, char** argv) {
         tide::waves::Record mode{0.01, 0.01, {}};
         const float z = 0.5f * world.def().domainMax.z;
         const int samples = static_cast<int>(std::lround(seconds / mode.dt));
+        const int energyEvery = static_cast<int>(std::lround(energy / mode.dt));
         for (int n = 0; n < samples; ++n) {
             world.advance(mode.dt);
             double sum = 0.0;
             int count = 0;
-            for (float x = 0.04f; x < length - 0.0399f; x += 0.02f) {
+            for (float x = periodic ? 0.0f : 0.04f; x < extent - (periodic ? 0.0099f : 0.0399f); x += 0.02f) {
                 const float height = world.surfaceHeight(x, z);
                 if (!std::isfinite(height)) continue;
                 sum += (height - depth) * std::cos(k * x);
                 ++count;
             }
             mode.eta.push_back(count > 0 ? 2.0 * sum / count : 0.0);
+            if (energyEvery > 0 && (n + 1) % energyEvery == 0) {
+                const auto& q = world.particles();
+                double kin = 0.0, pot = 0.0;
+                for (std::uint32_t i = 0; i < q.size(); ++i) {
+                    kin += 0.5 * q.mass[i] * glm::dot(q.velocity[i], q.velocity[i]);
+                    pot += q.mass[i] * g * q.position[i].y;
+                }
+                std::printf("t %.2f s: mode %+.4f m, kinetic %.4f J, kinetic + potential %.4f J\n", (n + 1) * mode.dt,
+                            mode.eta.back(), kin, kin + pot);
+            }
         }
         const tide::waves::DampedFit fit = tide::waves::fitDampedOscillation(mode, 0.7 * omega, 1.3 * omega, 2.0);
         const tide::WorldStats& s = world.stats();
         std::printf("%s, spacing %.4f m, support %.2f spacings, a = %.4f m, L = %.3f m, d = %.3f m: omega %.4f rad/s "
                     "against %.4f (%+.2f %%), amplitude %.4f m, decay %.3f 1/s, fit residual %.1e m; %llu steps, %.1f "
-                    "pressure iterations a step\n",
+                    "pressure iterations a step%s\n",
                     tank.solver.c_str(), tank.spacing, tank.supportRatio, amplitude, length, depth, fit.omega, omega,
                     100.0 * (fit.omega / omega - 1.0), fit.amplitude, fit.beta, fit.rmsResidual,
-                    static_cast<unsigned long long>(s.steps), static_cast<double>(s.pressureIterationsSum) / s.steps);
+                    static_cast<unsigned long long>(s.steps), static_cast<double>(s.pressureIterationsSum) / s.steps,
+                    periodic ? " (periodic in x)" : "");
     } catch (const std::exception& e) {
         std::fprintf(stderr, "tide_standing_wave: %s\n", e.what());
         return 1;

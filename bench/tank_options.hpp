@@ -16,6 +16,7 @@ namespace tide::bench {
 
 struct TankOptions {
     std::string solver = "dfsph";
+    std::string viscosity;  ///< solver.viscosity; empty: the solver's own
     float spacing = 0.02f, supportRatio = WorldDef{}.supportRatio;
     float length = 0.68f, depth = 0.3f;
     float maxDensityError = SolverDef{}.maxDensityError, xsph = -1.0f, momentum = -1.0f;
@@ -25,6 +26,7 @@ struct TankOptions {
 
     void addTo(CLI::App& app) {
         app.add_option("--solver", solver, "solver.method")->capture_default_str();
+        app.add_option("--viscosity", viscosity, "solver.viscosity (empty: the solver's own; xsph with --xsph 0: none)");
         app.add_option("--spacing", spacing, "particle spacing, m")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--support-ratio", supportRatio, "kernel support / spacing")->capture_default_str()->check(CLI::Range(1.0, 4.0));
         app.add_option("--length", length, "tank length (x), m")->capture_default_str()->check(CLI::PositiveNumber);
@@ -45,6 +47,7 @@ struct TankOptions {
         def.supportRatio = supportRatio;
         def.threads = threads;
         def.solver.method = solver;
+        def.solver.viscosity = viscosity;
         def.solver.maxDensityError = maxDensityError;
         def.solver.xsph = xsph;
         def.solver.momentum = momentum;

@@ -42,6 +42,18 @@ inline World stillTank(WorldDef def, float length, float depth, int widthInSpaci
     return world;
 }
 
+/// Water `depth` deep on a floor, periodic along x (`length`) and z (`widthInSpacings`): no
+/// side walls at all.
+inline World periodicTank(WorldDef def, float length, float depth, int widthInSpacings) {
+    def.domainMin = {0.0f, 0.0f, 0.0f};
+    def.domainMax = {length, 2.0f * depth, static_cast<float>(widthInSpacings) * def.particleSpacing};
+    def.periodic = {true, false, true};
+    World world(def);
+    world.addMaterial(MaterialDef{});
+    world.addBlock({{0.0f, 0.0f, 0.0f}, {length, depth, def.domainMax.z}, {}, 0});
+    return world;
+}
+
 /// A dam break: a water column `column` wide and high in a corner of a tank `length` long.
 inline World damBreak(float spacing, int threads = 0, float length = 1.6f, float column = 0.4f, float width = 0.4f,
                        int reorderInterval = WorldDef{}.reorderInterval, const std::string& solver = "classic") {
