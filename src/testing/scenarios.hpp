@@ -29,25 +29,15 @@ inline int periodicWidthInSpacings(float supportRatio) {
     return std::max(4, static_cast<int>(std::ceil(2.0f * supportRatio - 1e-4f)));
 }
 
-/// Still water `depth` deep in a tank `length` long and twice the depth high, walls across x;
-/// across z one periodic cell `widthInSpacings` spacings wide (2D), or with `closed` walls
-/// and a square floor. Spacing, support, gravity, solver and threads come from `def`.
+/// Still water `depth` deep in a tank `length` long and twice the depth high, walls across x
+/// (or periodic, if `def` makes x periodic); across z one periodic cell `widthInSpacings`
+/// spacings wide (2D), or with `closed` walls and a square floor. Spacing, support, gravity,
+/// solver and threads come from `def`.
 inline World stillTank(WorldDef def, float length, float depth, int widthInSpacings, bool closed = false) {
     def.domainMin = {0.0f, 0.0f, 0.0f};
     def.domainMax = {length, 2.0f * depth, closed ? length : static_cast<float>(widthInSpacings) * def.particleSpacing};
-    def.periodic = {false, false, !closed};
-    World world(def);
-    world.addMaterial(MaterialDef{});
-    world.addBlock({{0.0f, 0.0f, 0.0f}, {length, depth, def.domainMax.z}, {}, 0});
-    return world;
-}
-
-/// Water `depth` deep on a floor, periodic along x (`length`) and z (`widthInSpacings`): no
-/// side walls at all.
-inline World periodicTank(WorldDef def, float length, float depth, int widthInSpacings) {
-    def.domainMin = {0.0f, 0.0f, 0.0f};
-    def.domainMax = {length, 2.0f * depth, static_cast<float>(widthInSpacings) * def.particleSpacing};
-    def.periodic = {true, false, true};
+    def.periodic.y = false;
+    def.periodic.z = !closed;
     World world(def);
     world.addMaterial(MaterialDef{});
     world.addBlock({{0.0f, 0.0f, 0.0f}, {length, depth, def.domainMax.z}, {}, 0});
