@@ -20,6 +20,7 @@ struct TankOptions {
     float spacing = 0.02f, supportRatio = WorldDef{}.supportRatio;
     float length = 0.68f, depth = 0.3f;
     float maxDensityError = SolverDef{}.maxDensityError, xsph = -1.0f, momentum = -1.0f;
+    float maxDt = SolverDef{}.maxDt, cfl = SolverDef{}.cflNumber;
     int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows
     int maxIterations = SolverDef{}.maxIterations;
     int threads = 1;
@@ -36,6 +37,8 @@ struct TankOptions {
         app.add_option("--xsph", xsph, "solver.xsph (negative: the solver's default)")->capture_default_str();
         app.add_option("--momentum", momentum, "solver.momentum (negative: the solver's default)")->capture_default_str();
         app.add_option("--max-iterations", maxIterations, "solver.max_iterations")->capture_default_str()->check(CLI::PositiveNumber);
+        app.add_option("--max-dt", maxDt, "solver.max_dt, s")->capture_default_str()->check(CLI::PositiveNumber);
+        app.add_option("--cfl", cfl, "solver.cfl")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--threads", threads, "worker threads")->capture_default_str();
     }
     [[nodiscard]] int widthInSpacings() const {
@@ -52,6 +55,8 @@ struct TankOptions {
         def.solver.xsph = xsph;
         def.solver.momentum = momentum;
         def.solver.maxIterations = maxIterations;
+        def.solver.maxDt = maxDt;
+        def.solver.cflNumber = cfl;
         return def;
     }
 };

@@ -19,6 +19,7 @@ namespace {
 constexpr std::uint32_t kMinNeighborsForDivergence = 20;
 /// Jacobi weight of the density solve. Its pressure may fall as well as rise, and full
 /// Jacobi steps on this system overshoot and diverge; IISPH (Ihmsen et al. 2014) uses 0.5.
+/// Both solves' weights are for the default support; wider ones scale them (jacobi_weight.hpp).
 constexpr float kRelaxation = 0.5f;
 /// The density solve stops at this fraction of SolverDef::maxDensityError: what it checks is
 /// the density predicted over this step's neighbour lists; the density reached also counts
@@ -258,7 +259,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             break;
         // Full Jacobi steps, as the paper takes, for one rest density; with a density contrast
         // the light particles' rows are far from diagonally dominant and full steps diverge.
-        const float weight = contrast_.uniform() ? 1.0f : kRelaxation;
+        const float weight = (contrast_.uniform() ? 1.0f : kRelaxation) * weightScaleNow_;
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             k_[i] = weight * error_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
             p.warmDivergence[i] += k_[i];
@@ -305,6 +306,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     });
     push();
     const float heavyBall = ctx.solver.momentum >= 0.0f ? ctx.solver.momentum : kMomentum;
+    const float relaxation = kRelaxation * weightScaleNow_;
     // A step the free-fall limit or a short max_dt shortened removes the compression the
     // particles already have (ρ_i − ρ0, what earlier solves left within their tolerance) over
     // the step it would otherwise have taken, not within dt (Baumgarte 1972, "Stabilization of constraints and
@@ -367,7 +369,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
         const float momentum = iteration > 0 && contrast_.uniform() && !converged ? heavyBall / dt : 0.0f;
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             const float updated =
-                std::max(kappa[i] + kRelaxation * error_[i] * alpha_[i] * invDt2 + momentum * k_[i], 0.0f);  // eq. 12
+                std::max(kappa[i] + relaxation * error_[i] * alpha_[i] * invDt2 + momentum * k_[i], 0.0f);  // eq. 12
             k_[i] = (updated - kappa[i]) * dt;
             kappa[i] = updated;
         });
@@ -381,6 +383,7 @@ double DfsphBender2017::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
     prepare(ctx);  // sets contrast_
+    weightScaleNow_ = weightScale_(ctx.supportRadius / ctx.particleSpacing);
     const bool uniform = contrast_.uniform();
     positionK_.resize(n);
     computeAlpha(ctx);

@@ -28,6 +28,7 @@
 #include "boundary/wall_pressure_adami2012.hpp"
 #include "core/kernels.hpp"
 #include "solvers/density_contrast_solenthaler2008.hpp"
+#include "solvers/jacobi_weight.hpp"
 #include "solvers/pair_kernels.hpp"
 #include "solvers/pair_sums.hpp"
 #include "solvers/solver.hpp"
@@ -92,6 +93,8 @@ private:
     std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
     WallPressure wall_;
     DensityContrast contrast_;         ///< several rest densities: Solenthaler & Pajarola 2008
+    JacobiWeightScale weightScale_;    ///< the Jacobi weights' factor for supports beyond 2 spacings
+    float weightScaleNow_ = 1.0f;      ///< this step's
     std::vector<float> scaledKappa_;   ///< κ̃ = κ ρ0_i/ρ0_ref for the wall pressure (several rest densities)
     PairKernels fluidF_;                     ///< W'(r)/r per fluid pair
     PairKernels wallF_;                      ///< W'(r)/r per fluid–boundary pair

@@ -14,7 +14,7 @@ namespace tide {
 
 namespace {
 /// Jacobi weight: pressure may fall as well as rise, and full steps overshoot (as in IISPH,
-/// Ihmsen et al. 2014).
+/// Ihmsen et al. 2014); for the default support, wider ones scale it (jacobi_weight.hpp).
 constexpr float kRelaxation = 0.5f;
 /// The solve stops at this fraction of the tolerance: the density reached also counts pairs
 /// that come into range during the step, which the prediction over x(t)'s neighbours misses.
@@ -157,6 +157,7 @@ PcisphSolenthaler2009::Solve PcisphSolenthaler2009::solvePressure(StepContext& c
     // The walls' hydrostatic part acts from the start, before any fluid pressure.
     computePressureAccel(ctx);
     Solve solve;
+    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing);
     for (; solve.iterations < ctx.solver.maxIterations; ++solve.iterations) {
         predictPositions(ctx, dt);
         predictCompression(ctx, dt);
@@ -172,7 +173,7 @@ PcisphSolenthaler2009::Solve PcisphSolenthaler2009::solvePressure(StepContext& c
         }
         // Projected relaxed Jacobi (as in dfsph): p ≥ 0, and it may fall back after overshooting.
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            pressure_[i] = std::max(pressure_[i] + kRelaxation * delta_[i] * residual_[i], 0.0f);
+            pressure_[i] = std::max(pressure_[i] + relaxation * delta_[i] * residual_[i], 0.0f);
         });
         computePressureAccel(ctx);
     }

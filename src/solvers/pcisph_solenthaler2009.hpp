@@ -22,6 +22,7 @@
 
 #include "boundary/wall_pressure_adami2012.hpp"
 #include "solvers/density_contrast_solenthaler2008.hpp"
+#include "solvers/jacobi_weight.hpp"
 #include "solvers/solver.hpp"
 #include "solvers/xsph_monaghan1989.hpp"
 
@@ -40,6 +41,7 @@ public:
     }
 
 private:
+    JacobiWeightScale weightScale_;  ///< the Jacobi weight's factor for supports beyond 2 spacings
     struct Solve {
         int iterations = 0;
         bool converged = false;
