@@ -315,7 +315,7 @@ TEST(IncompressibleSolvers, WideSupportsHoldATankAtRest) {
                         static_cast<unsigned long long>(world.stats().unconvergedSolves));
             const float fallSpeed = std::sqrt(2.0f * 9.81f * 0.2f);  // what a collapse would reach
             EXPECT_LT(fastest, 0.2f * fallSpeed) << solver << " at " << support;
-            EXPECT_LT(compression, 1.5 * def.solver.maxDensityError) << solver << " at " << support;
+            EXPECT_LT(compression, def.solver.maxDensityError) << solver << " at " << support;
             EXPECT_EQ(world.stats().unconvergedSolves, 0u) << solver << " at " << support;
             EXPECT_EQ(world.countEscapedParticles(), 0u);
         }

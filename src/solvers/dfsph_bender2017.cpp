@@ -259,7 +259,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             break;
         // Full Jacobi steps, as the paper takes, for one rest density; with a density contrast
         // the light particles' rows are far from diagonally dominant and full steps diverge.
-        const float weight = (contrast_.uniform() ? 1.0f : kRelaxation) * weightScaleNow_;
+        const float weight = (contrast_.uniform() ? 1.0f : kRelaxation) * weightScale_(ctx.supportRadius / ctx.particleSpacing);
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             k_[i] = weight * error_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
             p.warmDivergence[i] += k_[i];
@@ -306,7 +306,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     });
     push();
     const float heavyBall = ctx.solver.momentum >= 0.0f ? ctx.solver.momentum : kMomentum;
-    const float relaxation = kRelaxation * weightScaleNow_;
+    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing);
     // A step the free-fall limit or a short max_dt shortened removes the compression the
     // particles already have (ρ_i − ρ0, what earlier solves left within their tolerance) over
     // the step it would otherwise have taken, not within dt (Baumgarte 1972, "Stabilization of constraints and
@@ -383,7 +383,6 @@ double DfsphBender2017::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
     prepare(ctx);  // sets contrast_
-    weightScaleNow_ = weightScale_(ctx.supportRadius / ctx.particleSpacing);
     const bool uniform = contrast_.uniform();
     positionK_.resize(n);
     computeAlpha(ctx);

@@ -94,7 +94,6 @@ private:
     WallPressure wall_;
     DensityContrast contrast_;         ///< several rest densities: Solenthaler & Pajarola 2008
     JacobiWeightScale weightScale_;    ///< the Jacobi weights' factor for supports beyond 2 spacings
-    float weightScaleNow_ = 1.0f;      ///< this step's
     std::vector<float> scaledKappa_;   ///< κ̃ = κ ρ0_i/ρ0_ref for the wall pressure (several rest densities)
     PairKernels fluidF_;                     ///< W'(r)/r per fluid pair
     PairKernels wallF_;                      ///< W'(r)/r per fluid–boundary pair
