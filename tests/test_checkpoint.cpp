@@ -96,43 +96,56 @@ TEST(Checkpoint, MovingObstaclesResumeBitIdentically) {
     expectResumesIdentically([] { return scenarios::spinningCylinder(0.02f, 0.2f, 0.04f, 3.0f, 1.0f, 2, "pcisph"); }, 12, 12);
 }
 
-TEST(Checkpoint, AVersion2FileWithoutTheUnconvergedCountStillResumes) {
+/// `current` (a version-4 file) as the older `version` wrote it. Version 3 lacks the
+/// divergence solve's iteration sum, 8 bytes after the phase times; version 2 also the 12
+/// bytes of the two unconverged-solve stats, which follow the pressure iteration sum. Where
+/// they sit: after the header (magic, version, byte order, size, CRC), the time, sound speed
+/// and reorder counter (16 bytes), then the stats up to that sum (48 bytes); the rest of the
+/// stats up to the divergence sum is 80 bytes.
+std::string downgrade(const std::string& current, std::uint32_t version) {
+    constexpr std::size_t header = 8 + 4 + 4 + 8 + 4, unconverged = header + 16 + 48, divergence = unconverged + 12 + 80;
+    std::string payload = current.substr(header, divergence - header) + current.substr(divergence + 8);
+    if (version < 3) payload = payload.substr(0, unconverged - header) + payload.substr(unconverged + 12 - header);
+    std::string old = current.substr(0, header);
+    const std::uint32_t crc = io::crc32(payload);
+    const std::uint64_t size = payload.size();
+    std::memcpy(old.data() + 8, &version, 4);
+    std::memcpy(old.data() + 16, &size, 8);
+    std::memcpy(old.data() + 24, &crc, 4);
+    return old + payload;
+}
+
+TEST(Checkpoint, Version2And3FilesStillResume) {
     const auto make = [] { return scenarios::damBreak(0.04f, 1, 0.4f, 0.12f, 0.12f, 25, "dfsph"); };
     World uninterrupted = make();
     for (int s = 0; s < 5; ++s) uninterrupted.step(1.0);
-    const std::string v3 = io::encodeCheckpoint(uninterrupted.saveState(), "app");
-    // Version 2 is version 3 without the 12 bytes of the two unconverged-solve stats, which
-    // follow the pressure iteration sum: time, sound speed, reorder counter (16 bytes), then
-    // the stats up to that sum (48 bytes). The header: magic, version, byte order, size, CRC.
-    constexpr std::size_t header = 8 + 4 + 4 + 8 + 4, cut = header + 16 + 48;
-    std::string payload = v3.substr(header, cut - header) + v3.substr(cut + 12);
-    std::string v2 = v3.substr(0, header);
-    const std::uint32_t version = 2, crc = io::crc32(payload);
-    const std::uint64_t size = payload.size();
-    std::memcpy(v2.data() + 8, &version, 4);
-    std::memcpy(v2.data() + 16, &size, 8);
-    std::memcpy(v2.data() + 24, &crc, 4);
-    v2 += payload;
-
-    io::Checkpoint c = io::decodeCheckpoint(v2, "memory");
-    EXPECT_EQ(c.world.stats.unconvergedSolves, 0u);
-    EXPECT_EQ(c.world.stats.pressureIterationsSum, uninterrupted.stats().pressureIterationsSum);
-    World resumed = make();
-    resumed.restoreState(std::move(c.world));
+    const std::string v4 = io::encodeCheckpoint(uninterrupted.saveState(), "app");
+    ASSERT_GT(uninterrupted.stats().divergenceIterationsSum, 0u);
+    ASSERT_EQ(io::decodeCheckpoint(v4, "memory").world.stats.divergenceIterationsSum,
+              uninterrupted.stats().divergenceIterationsSum);
+    std::vector<World> resumed;
+    for (const std::uint32_t version : {2u, 3u}) {
+        io::Checkpoint c = io::decodeCheckpoint(downgrade(v4, version), "memory");
+        EXPECT_EQ(c.world.stats.unconvergedSolves, version >= 3 ? uninterrupted.stats().unconvergedSolves : 0u);
+        EXPECT_EQ(c.world.stats.pressureIterationsSum, uninterrupted.stats().pressureIterationsSum);
+        EXPECT_EQ(c.world.stats.divergenceIterationsSum, 0u) << "version " << version;
+        resumed.push_back(make());
+        resumed.back().restoreState(std::move(c.world));
+    }
     for (int s = 0; s < 5; ++s) {
         uninterrupted.step(1.0);
-        resumed.step(1.0);
+        for (World& w : resumed) w.step(1.0);
     }
-    expectIdentical(uninterrupted, resumed);
+    for (const World& w : resumed) expectIdentical(uninterrupted, w);
 
-    std::string v9 = v3;
+    std::string v9 = v4;
     const std::uint32_t future = 9;
     std::memcpy(v9.data() + 8, &future, 4);
     try {
         (void)io::decodeCheckpoint(v9, "memory");
         ADD_FAILURE() << "a version 9 checkpoint was read";
     } catch (const io::CheckpointError& e) {
-        EXPECT_NE(std::string(e.what()).find("version 9, this tide reads 2 to 3"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("version 9, this tide reads 2 to 4"), std::string::npos) << e.what();
     }
 }
 

@@ -95,6 +95,8 @@ std::vector<BrokenScene> brokenScenes() {
         {"momentum of one", smallScene(R"(, "solver": {"momentum": 1})"), "solver.momentum"},
         {"negative divergence iterations", smallScene(R"(, "solver": {"min_divergence_iterations": -1})"),
          "solver.min_divergence_iterations"},
+        {"divergence tolerance of zero", smallScene(R"(, "solver": {"max_divergence_error": 0})"),
+         "solver.max_divergence_error"},
         {"unknown output format", replace(ok, "[\"vtu\"]", "[\"vtk\"]"), "output.formats[0]"},
         {"fps zero", replace(ok, "\"fps\": 20", "\"fps\": 0"), "output.fps"},
         {"emitter without velocity", smallScene(R"(, "emitters": [{"min": [0, 0.1, 0.05], "max": [0, 0.15, 0.1]}])"), "emitters[0].velocity"},

@@ -39,6 +39,7 @@ TEST(World, RejectsBadDefinitionsNamingTheField) {
     expectRejected(with([](WorldDef& d) { d.solver.cflNumber = 3.0f; }), "solver.cflNumber");
     expectRejected(with([](WorldDef& d) { d.solver.momentum = 1.5f; }), "solver.momentum");
     expectRejected(with([](WorldDef& d) { d.solver.minDivergenceIterations = -2; }), "solver.minDivergenceIterations");
+    expectRejected(with([](WorldDef& d) { d.solver.maxDivergenceError = 0.0f; }), "solver.maxDivergenceError");
     expectRejected(with([](WorldDef& d) { d.solver.minDt = 1.0f; }), "solver.minDt");
     World world{WorldDef{}};
     expectRejected([&] { world.addMaterial(MaterialDef{"oil", -3.0f, 0.1f, {}}); }, "restDensity");

@@ -54,6 +54,8 @@ void writeStats(const fs::path& file, const World& world, double wall, std::uint
     j["solver"] = world.def().solver.method;
     j["pressure_iterations_mean"] =
         s.steps ? static_cast<double>(s.pressureIterationsSum) / static_cast<double>(s.steps) : 0.0;
+    j["divergence_iterations_mean"] =
+        s.steps ? static_cast<double>(s.divergenceIterationsSum) / static_cast<double>(s.steps) : 0.0;
     j["pressure_unconverged_steps"] = s.unconvergedSolves;
     io::writeFileAtomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }

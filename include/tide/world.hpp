@@ -46,6 +46,7 @@ struct WorldStats {
     int lastPressureIterations = 0;     ///< iterations of the last step's pressure solve (0: explicit)
     // Running totals over every step since creation:
     std::uint64_t pressureIterationsSum = 0;
+    std::uint64_t divergenceIterationsSum = 0;  ///< of them, dfsph's divergence-free solve's
     /// Steps whose pressure solve stopped (at solver.max_iterations, or diverging) short of
     /// its density tolerance: the fluid carries the compression left over into the next step.
     std::uint64_t unconvergedSolves = 0;

@@ -64,6 +64,7 @@ void validateWorldDef(const WorldDef& d) {
     if (s.xsph >= 0.0f) requireInRange("solver.xsph", s.xsph, 0.0f, 1.0f);
     if (s.momentum >= 0.0f) requireInRange("solver.momentum", s.momentum, 0.0f, 0.95f);
     requireInRange("solver.maxDensityError", s.maxDensityError, 1e-6f, 0.5f);
+    if (s.maxDivergenceError >= 0.0f) requireInRange("solver.maxDivergenceError", s.maxDivergenceError, 1e-6f, 0.5f);
     if (s.minDivergenceIterations < -1)
         throw std::invalid_argument("solver.minDivergenceIterations: must be >= 0 (or -1: minIterations), got " +
                                     std::to_string(s.minDivergenceIterations));
@@ -697,6 +698,7 @@ double World::Impl::step(double maxDt, Clock clockMode) {
         w.diffusion.apply(w.particles, w.neighbors, w.periodic, w.pairTables, w.h, static_cast<float>(dt), w.threads);
     w.stats.lastPressureIterations = ctx.pressureIterations;
     w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);
+    w.stats.divergenceIterationsSum += static_cast<std::uint64_t>(ctx.divergenceIterations);
     w.stats.unconvergedSolves += ctx.pressureConverged ? 0 : 1;
     w.stats.recentUnconverged = (w.stats.recentUnconverged << 1) | (ctx.pressureConverged ? 0u : 1u);
     const float margin = w.solver->wallMargin() * w.def.particleSpacing;

@@ -100,6 +100,7 @@ void putStats(Writer& w, const WorldStats& s) {
     const PhaseSeconds& p = s.phaseSeconds;
     for (const double seconds : {p.neighborSearch, p.density, p.pressureSolve, p.nonPressureForces, p.integration})
         w.put(seconds);
+    w.put(s.divergenceIterationsSum);
 }
 
 WorldStats getStats(Reader& r, std::uint32_t version) {
@@ -125,6 +126,7 @@ WorldStats getStats(Reader& r, std::uint32_t version) {
     PhaseSeconds& p = s.phaseSeconds;
     for (double* seconds : {&p.neighborSearch, &p.density, &p.pressureSolve, &p.nonPressureForces, &p.integration})
         *seconds = r.get<double>("stats");
+    if (version >= 4) s.divergenceIterationsSum = r.get<std::uint64_t>("stats");
     return s;
 }
 

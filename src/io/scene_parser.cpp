@@ -206,7 +206,7 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     const std::string path = "solver";
     if (!r.object(j, path, {"method", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "viscosity",
                             "xsph", "momentum", "clamp_negative_pressure", "support_ratio", "max_density_error",
-                            "min_iterations", "min_divergence_iterations", "max_iterations"}))
+                            "max_divergence_error", "min_iterations", "min_divergence_iterations", "max_iterations"}))
         return;
     SolverDef& s = scene.world.solver;
     if (auto method = r.string(j, "method", path, false)) {
@@ -245,6 +245,8 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     if (auto v = r.number(j, "momentum", path, false, 0.0, 0.95)) s.momentum = static_cast<float>(*v);
     if (auto v = r.boolean(j, "clamp_negative_pressure", path)) s.clampNegativePressure = *v;
     if (auto v = r.number(j, "max_density_error", path, false, 0.0, 0.5, true)) s.maxDensityError = static_cast<float>(*v);
+    if (auto v = r.number(j, "max_divergence_error", path, false, 0.0, 0.5, true))
+        s.maxDivergenceError = static_cast<float>(*v);
     if (auto v = r.number(j, "min_iterations", path, false, 0.0, 1000.0)) s.minIterations = static_cast<int>(*v);
     if (auto v = r.number(j, "min_divergence_iterations", path, false, 0.0, 1000.0))
         s.minDivergenceIterations = static_cast<int>(*v);

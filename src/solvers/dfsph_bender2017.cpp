@@ -247,6 +247,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
     };
     push();
     const int minimum = ctx.solver.minDivergenceIterations >= 0 ? ctx.solver.minDivergenceIterations : ctx.solver.minIterations;
+    const double tolerance = ctx.solver.maxDivergenceError >= 0.0f ? ctx.solver.maxDivergenceError : ctx.solver.maxDensityError;
     int iteration = 0;
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -255,7 +256,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
         });
         // Mean relative compression rate, over the last step's length.
         if (iteration >= minimum &&
-            meanRelativeError(ctx, Solve::Divergence) * lastDt_ <= ctx.solver.maxDensityError)
+            meanRelativeError(ctx, Solve::Divergence) * lastDt_ <= tolerance)
             break;
         // Full Jacobi steps, as the paper takes, for one rest density; with a density contrast
         // the light particles' rows are far from diagonally dominant and full steps diverge.
@@ -487,6 +488,7 @@ double DfsphBender2017::step(StepContext& ctx) {
         p.pressure[i] = smoothing < 1.0f ? p.pressure[i] + smoothing * (pressure - p.pressure[i]) : pressure;
     });
     ctx.pressureIterations = divergenceIterations + densityIterations;
+    ctx.divergenceIterations = divergenceIterations;
     ctx.pressureConverged = densityConverged_;
     lastDt_ = dt;
     return dt;

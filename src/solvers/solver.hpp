@@ -43,6 +43,7 @@ struct StepContext {
     int threads;
     double maxDt;            ///< the step may not be longer (e.g. to land on a frame time)
     int pressureIterations = 0;  ///< out: iterations the pressure solve took this step
+    int divergenceIterations = 0;  ///< out: of them, dfsph's divergence-free solve's (0 for the others)
     /// out: false when the pressure solve stopped (at max_iterations, or diverging) short of
     /// its density tolerance; explicit solvers leave it true.
     bool pressureConverged = true;
