@@ -61,7 +61,7 @@ void BM_PairSums(benchmark::State& state) {
     const auto& x = world.particles().position;
     const auto& v = world.particles().velocity;
     const float h = world.supportRadius();
-    const tide::kernels::CubicSpline w(h);
+    const tide::kernels::SmoothingKernel w(h);
     tide::UniformGrid grid;
     tide::NeighborList list;
     grid.build(x, h, 1);

@@ -4,6 +4,7 @@
 /// (tide_standing_wave, tide_rest_layers): the tank, the resolution and the solver settings,
 /// and the WorldDef they make.
 
+#include <map>
 #include <string>
 
 #include <CLI/CLI.hpp>
@@ -24,11 +25,16 @@ struct TankOptions {
     int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows
     int maxIterations = SolverDef{}.maxIterations;
     int threads = 1;
+    KernelShape kernel = SolverDef{}.kernel;
 
     void addTo(CLI::App& app) {
         app.add_option("--solver", solver, "solver.method")->capture_default_str();
         app.add_option("--viscosity", viscosity, "solver.viscosity (empty: the solver's own; xsph with --xsph 0: none)");
         app.add_option("--spacing", spacing, "particle spacing, m")->capture_default_str()->check(CLI::PositiveNumber);
+        app.add_option("--kernel", kernel, "solver.kernel")
+            ->transform(CLI::CheckedTransformer(std::map<std::string, KernelShape>{{"cubic_spline", KernelShape::CubicSpline},
+                                                                                   {"wendland_c2", KernelShape::WendlandC2}}))
+            ->default_str("cubic_spline");
         app.add_option("--support-ratio", supportRatio, "kernel support / spacing")->capture_default_str()->check(CLI::Range(1.0, 4.0));
         app.add_option("--length", length, "tank length (x), m")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--depth", depth, "water depth, m")->capture_default_str()->check(CLI::PositiveNumber);
@@ -50,6 +56,7 @@ struct TankOptions {
         def.supportRatio = supportRatio;
         def.threads = threads;
         def.solver.method = solver;
+        def.solver.kernel = kernel;
         def.solver.viscosity = viscosity;
         def.solver.maxDensityError = maxDensityError;
         def.solver.xsph = xsph;

@@ -90,6 +90,7 @@ std::vector<BrokenScene> brokenScenes() {
         {"blocks not an array", replace(ok, R"([{"min": [0, 0, 0], "max": [0.1, 0.1, 0.2], "material": "water"}])", "{}"), "blocks"},
         {"unknown solver", smallScene(R"(, "solver": {"method": "dfsph-ultra"})"), "solver.method"},
         {"unknown solver key", smallScene(R"(, "solver": {"methd": "classic"})"), "solver.methd"},
+        {"unknown kernel", smallScene(R"(, "solver": {"kernel": "gaussian"})"), "solver.kernel"},
         {"bad equation of state", smallScene(R"(, "solver": {"equation_of_state": "ideal gas"})"), "solver.equation_of_state"},
         {"cfl above one", smallScene(R"(, "solver": {"cfl": 4})"), "solver.cfl"},
         {"momentum of one", smallScene(R"(, "solver": {"momentum": 1})"), "solver.momentum"},

@@ -29,8 +29,23 @@ TEST(JacobiWeight, WiderSupportsKeepTheTunedMargin) {
         EXPECT_NEAR(0.5f * scale * latticeJacobiGain(s), 0.5f * latticeJacobiGain(2.0f), 1e-4f) << s;
     }
     JacobiWeightScale cached;
-    EXPECT_EQ(cached(3.0f), jacobiWeightScale(3.0f));
-    EXPECT_EQ(cached(2.0f), 1.0f);
+    EXPECT_EQ(cached(3.0f, KernelShape::CubicSpline), jacobiWeightScale(3.0f));
+    EXPECT_EQ(cached(2.0f, KernelShape::CubicSpline), 1.0f);
+    EXPECT_EQ(cached(3.0f, KernelShape::WendlandC2), jacobiWeightScale(3.0f, KernelShape::WendlandC2));
+}
+
+// Wendland C2 (the same numpy sum with its gradient): 2.61 at 2 spacings, 3.84 at 2.5, 6.24
+// at 3, 14.30 at 4. Below the cubic spline's 2.81 at 2 it keeps the tuned weights; wider, it
+// scales them to the same margin.
+TEST(JacobiWeight, WendlandKeepsTheCubicSplinesMargin) {
+    constexpr KernelShape wendland = KernelShape::WendlandC2;
+    EXPECT_NEAR(latticeJacobiGain(2.0f, wendland), 2.61f, 0.01f);
+    EXPECT_NEAR(latticeJacobiGain(2.5f, wendland), 3.84f, 0.01f);
+    EXPECT_NEAR(latticeJacobiGain(3.0f, wendland), 6.24f, 0.01f);
+    EXPECT_NEAR(latticeJacobiGain(4.0f, wendland), 14.30f, 0.02f);
+    EXPECT_EQ(jacobiWeightScale(2.0f, wendland), 1.0f);
+    for (const float s : {2.5f, 3.0f, 4.0f})
+        EXPECT_NEAR(jacobiWeightScale(s, wendland) * latticeJacobiGain(s, wendland), latticeJacobiGain(2.0f), 1e-4f) << s;
 }
 
 }  // namespace

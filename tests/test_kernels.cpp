@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +14,10 @@
 namespace {
 
 using namespace tide::kernels;
+using tide::KernelShape;
+
+SmoothingKernel cubicSpline(float h) { return SmoothingKernel(h, KernelShape::CubicSpline); }
+SmoothingKernel wendland(float h) { return SmoothingKernel(h, KernelShape::WendlandC2); }
 
 /// ∫ W dV = ∫_0^h 4π r² W(r) dr by composite Simpson in double.
 double integrate(const std::function<float(float)>& w, double h, int intervals = 20000) {
@@ -33,7 +38,8 @@ TEST_P(KernelNormalisation, EachKernelIntegratesToOne) {
     EXPECT_NEAR(integrate([&](float r) { return Poly6(h).value(r); }, h), 1.0, 1e-3);
     EXPECT_NEAR(integrate([&](float r) { return Spiky(h).value(r); }, h), 1.0, 1e-3);
     EXPECT_NEAR(integrate([&](float r) { return Viscosity(h).value(r); }, h), 1.0, 1e-3);
-    EXPECT_NEAR(integrate([&](float r) { return CubicSpline(h).value(r); }, h), 1.0, 1e-3);
+    EXPECT_NEAR(integrate([&](float r) { return cubicSpline(h).value(r); }, h), 1.0, 1e-3);
+    EXPECT_NEAR(integrate([&](float r) { return wendland(h).value(r); }, h), 1.0, 1e-3);
 }
 
 INSTANTIATE_TEST_SUITE_P(SupportRadii, KernelNormalisation, ::testing::Values(0.04f, 1.0f, 2.5f));
@@ -72,7 +78,8 @@ TEST(KernelDerivatives, MatchFiniteDifferences) {
         expectDerivativesMatchFiniteDifferences(Poly6(h), h);
         expectDerivativesMatchFiniteDifferences(Spiky(h), h);
         expectDerivativesMatchFiniteDifferences(Viscosity(h), h);
-        expectDerivativesMatchFiniteDifferences(CubicSpline(h), h);
+        expectDerivativesMatchFiniteDifferences(cubicSpline(h), h);
+        expectDerivativesMatchFiniteDifferences(wendland(h), h);
     }
 }
 
@@ -97,30 +104,48 @@ TEST(KernelSupport, ZeroAtAndBeyondSupport) {
         EXPECT_EQ(Poly6(h).value(r), 0.0f);
         EXPECT_EQ(Spiky(h).value(r), 0.0f);
         EXPECT_EQ(Viscosity(h).value(r), 0.0f);
-        EXPECT_EQ(CubicSpline(h).value(r), 0.0f);
+        EXPECT_EQ(cubicSpline(h).value(r), 0.0f);
+        EXPECT_EQ(wendland(h).value(r), 0.0f);
+        EXPECT_EQ(wendland(h).derivative(r), 0.0f);
         EXPECT_EQ(Viscosity(h).laplacian(r), 0.0f);
     }
 }
 
 // The pressure solves read W'(r)/r per pair from 16-bit codes: every code is within half its
 // mantissa's step (2⁻¹², 2.4e-4) of the exact factor, from near 0 to the edge of the support,
-// where it is 0.
+// where it is 0, for both kernels.
 TEST(PairKernels, CodedGradientFactorIsWithinItsPrecision) {
     const float h = 0.04f;
-    const CubicSpline w(h);
-    tide::PairKernels factors;
-    factors.resize(tide::NeighborList{}, w);
-    const float bound = 12.0f * w.sigma / (h * h);  // |W'(r)/r| as r → 0, the largest
-    EXPECT_NEAR(factors.unit(), -bound, 1e-6f * bound);
-    float worst = 0.0f;
-    for (int k = 1; k < 4000; ++k) {
-        const float r = h * static_cast<float>(k) / 4000.0f;
-        const float exact = w.derivative(r) / r;
-        worst = std::max(worst, std::abs(factors.factor(factors.encode(w, r)) / exact - 1.0f));
+    // |W'(r)/r| as r → 0, the largest: 12σ/h² for the cubic spline, 20σ/h² for Wendland C2
+    for (const auto& [w, largest] : {std::pair{cubicSpline(h), 12.0f}, std::pair{wendland(h), 20.0f}}) {
+        tide::PairKernels factors;
+        factors.resize(tide::NeighborList{}, w);
+        const float bound = largest * w.sigma / (h * h);
+        EXPECT_NEAR(factors.unit(), -bound, 1e-6f * bound);
+        float worst = 0.0f;
+        for (int k = 1; k < 4000; ++k) {
+            const float r = h * static_cast<float>(k) / 4000.0f;
+            const float exact = w.derivative(r) / r, coded = factors.factor(factors.encode(w, r));
+            // Below 2⁻³¹ of the unit a factor codes as 0 (Wendland's (1 − q)³ in the last 0.1 % of the support)
+            if (exact / factors.unit() < tide::PairKernels::kSmallest) {
+                EXPECT_LE(std::abs(coded - exact), tide::PairKernels::kSmallest * bound) << r;
+                continue;
+            }
+            worst = std::max(worst, std::abs(coded / exact - 1.0f));
+        }
+        EXPECT_LE(worst, 2.45e-4f) << largest;
+        EXPECT_EQ(factors.factor(factors.encode(w, h)), 0.0f);
+        EXPECT_EQ(factors.factor(factors.encode(w, 0.0f)), 0.0f);
     }
-    EXPECT_LE(worst, 2.45e-4f);
-    EXPECT_EQ(factors.factor(factors.encode(w, h)), 0.0f);
-    EXPECT_EQ(factors.factor(factors.encode(w, 0.0f)), 0.0f);
+}
+
+// Wendland's C2 in 3D as Dehnen & Aly 2012 give it (table 1, with their H the support):
+// W(0) = 21/(2π H³), and W at H/2 is (1/2)⁴ · 3 of that.
+TEST(KernelValues, WendlandC2MatchesDehnenAndAly) {
+    const float h = 0.05f;
+    const float peak = 21.0f / (2.0f * pi * h * h * h);
+    EXPECT_FLOAT_EQ(wendland(h).value(0.0f), peak);
+    EXPECT_FLOAT_EQ(wendland(h).value(0.5f * h), peak * 0.0625f * 3.0f);
 }
 
 }  // namespace

@@ -41,7 +41,7 @@ Cloud randomCloud(std::size_t n, float size, unsigned seed) {
 /// Checks the three sums for particle i over the first `count` of `candidates` (the same for
 /// every count, so each length 0 … candidates.size() is covered).
 void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std::uint32_t>& candidates,
-                     const kernels::CubicSpline& w, const PeriodicBox& box) {
+                     const kernels::SmoothingKernel& w, const PeriodicBox& box) {
     const double h = w.h;
     const glm::vec3 xi(cloud.points[i]);
     const glm::vec3 vi(cloud.velocities[i]);
@@ -190,7 +190,6 @@ void expectSumsMatch(const Cloud& cloud, std::uint32_t i, const std::vector<std:
 TEST(PairSums, MatchTheSumsInDoubleForEveryListLength) {
     std::printf("pair sums run on %s\n", pair_sums::instructionSet());
     const float h = 0.04f;
-    const kernels::CubicSpline w(h);
     const Cloud cloud = randomCloud(400, 2.0f * h, 7);
     const PeriodicBox none;
     // 21 of particle 0's neighbours within the support.
@@ -198,12 +197,12 @@ TEST(PairSums, MatchTheSumsInDoubleForEveryListLength) {
     for (std::uint32_t j = 1; j < cloud.points.size() && candidates.size() < 21; ++j)
         if (glm::length(glm::vec3(cloud.points[j]) - glm::vec3(cloud.points[0])) < h) candidates.push_back(j);
     ASSERT_EQ(candidates.size(), 21u);
-    expectSumsMatch(cloud, 0, candidates, w, none);
+    for (const KernelShape shape : {KernelShape::CubicSpline, KernelShape::WendlandC2})
+        expectSumsMatch(cloud, 0, candidates, kernels::SmoothingKernel(h, shape), none);
 }
 
 TEST(PairSums, TakeTheNearestImageAcrossAPeriodicAxis) {
     const float h = 0.04f, size = 0.2f;
-    const kernels::CubicSpline w(h);
     Cloud cloud = randomCloud(300, size, 11);
     const PeriodicBox box = PeriodicBox::make({0, 0, 0}, {size, size, size}, {true, false, true});
     cloud.points[0] = glm::vec4(0.005f, 0.1f, 0.195f, 1.0f);  // at a corner of the periodic faces
@@ -214,7 +213,8 @@ TEST(PairSums, TakeTheNearestImageAcrossAPeriodicAxis) {
     for (const std::uint32_t j : candidates)
         across += glm::length(glm::vec3(cloud.points[0]) - glm::vec3(cloud.points[j])) >= h;
     ASSERT_GE(across, 3u);
-    expectSumsMatch(cloud, 0, candidates, w, box);
+    for (const KernelShape shape : {KernelShape::CubicSpline, KernelShape::WendlandC2})
+        expectSumsMatch(cloud, 0, candidates, kernels::SmoothingKernel(h, shape), box);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -60,6 +61,8 @@ FlumeRun runFlume(float spacing, float length, float dampingLength, const std::v
     solver.momentum = static_cast<float>(envOr("TIDE_WAVE_MOMENTUM", 0.0));
     if (const char* model = std::getenv("TIDE_WAVE_VISCOSITY")) solver.viscosity = model;
     if (const char* method = std::getenv("TIDE_WAVE_SOLVER")) solver.method = method;
+    if (const char* kernel = std::getenv("TIDE_WAVE_KERNEL"); kernel && std::string(kernel) == "wendland_c2")
+        solver.kernel = KernelShape::WendlandC2;
     solver.soundSpeed = static_cast<float>(envOr("TIDE_WAVE_SOUND_SPEED", solver.soundSpeed));
     const float supportRatio = static_cast<float>(envOr("TIDE_WAVE_SUPPORT_RATIO", WorldDef{}.supportRatio));
     const int width = scenarios::periodicWidthInSpacings(supportRatio);

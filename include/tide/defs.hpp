@@ -67,10 +67,23 @@ enum class EquationOfState {
     Tait,    ///< p = B ((ρ/ρ0)^7 − 1), B = ρ0 c² / 7 (Becker & Teschner 2007)
 };
 
+/// The smoothing kernel of the SPH sums (dfsph, pcisph, wcsph; classic keeps Müller's).
+enum class KernelShape {
+    CubicSpline,  ///< Monaghan 1992: the default; at 2 spacings the cheapest
+    /// Wendland 1995 C2, as DualSPHysics' default: stable against particle pairing (Dehnen &
+    /// Aly 2012), so wide supports (3 spacings) stay ordered; there standing waves keep
+    /// linear theory's frequency (within 0.5 %, the cubic spline at 2 spacings 2.5–3.3 % off:
+    /// docs/waves.md). At 2 spacings it is too narrow (+15 %).
+    WendlandC2,
+};
+/// The support a scene gives Wendland C2 unless it sets solver.support_ratio, in spacings.
+inline constexpr float kWendlandSupportRatio = 3.0f;
+
 /// How the pressure/viscosity solver runs and how its time step is chosen.
 struct SolverDef {
     /// Solver name, see tide::solverNames(): dfsph, pcisph, wcsph, classic (the seed's Müller 2003).
     std::string method = "dfsph";
+    KernelShape kernel = KernelShape::CubicSpline;  ///< scene key solver.kernel
     EquationOfState equationOfState = EquationOfState::Linear;
     /// Numerical speed of sound, m/s (classic, wcsph). 0 picks 10 × the free-fall speed
     /// over the domain height, which keeps density variations near 1 %.

@@ -36,9 +36,8 @@ public:
     /// iteration). κ_b is kept for the boundary particles near fluid only: the fluid reads no
     /// other, and the shell has several times more (memory: issue 8).
     void prepare(const BoundaryParticles& boundary, const CrossNeighborList& fluidNear, std::span<const std::uint32_t> near,
-                 std::span<const glm::vec3> fluid, const PeriodicBox& box, const glm::vec3& gravity, float supportRadius,
+                 std::span<const glm::vec3> fluid, const PeriodicBox& box, const glm::vec3& gravity, const kernels::SmoothingKernel& w,
                  int threads, std::span<const float> fluidScale = {}) {
-        const kernels::CubicSpline w(supportRadius);
         const auto n = static_cast<std::uint32_t>(near.size());
         near_ = near;
         boundaryCount_ = boundary.position.size();

@@ -12,9 +12,8 @@
 namespace tide {
 
 float freeSurfaceHeight(const ParticleStore& particles, std::span<const MaterialDef> materials, const PeriodicBox& box,
-                        float supportRadius, float x, float z) {
-    const float h = supportRadius;
-    const kernels::CubicSpline w(h);
+                        const kernels::SmoothingKernel& w, float x, float z) {
+    const float h = w.h;
     struct Near {
         float y, horizontal2, volume;
     };
@@ -51,13 +50,12 @@ float freeSurfaceHeight(const ParticleStore& particles, std::span<const Material
 }
 
 FieldSample sampleField(const ParticleStore& particles, std::span<const MaterialDef> materials, const PeriodicBox& box,
-                        float supportRadius, const glm::vec3& point) {
-    const kernels::CubicSpline w(supportRadius);
+                        const kernels::SmoothingKernel& w, const glm::vec3& point) {
     double weight = 0.0, density = 0.0, pressure = 0.0;
     glm::dvec3 velocity(0.0);
     for (std::uint32_t j = 0; j < particles.size(); ++j) {
         const float r = glm::length(box.delta(point, particles.position[j]));
-        if (r >= supportRadius) continue;
+        if (r >= w.h) continue;
         const double vw = particles.mass[j] / materials[particles.material[j]].restDensity * w.value(r);
         weight += vw;
         density += vw * particles.density[j];

@@ -22,13 +22,14 @@
 #include <tide/defs.hpp>
 #include <tide/particles.hpp>
 
+#include "core/kernels.hpp"
 #include "core/periodic_box.hpp"
 
 namespace tide {
 
 /// Free-surface height y at (x, z), m; NaN where the line is dry.
 float freeSurfaceHeight(const ParticleStore& particles, std::span<const MaterialDef> materials, const PeriodicBox& box,
-                        float supportRadius, float x, float z);
+                        const kernels::SmoothingKernel& w, float x, float z);
 
 /// Shepard-interpolated fluid state at a point.
 struct FieldSample {
@@ -37,6 +38,6 @@ struct FieldSample {
     glm::vec3 velocity;  ///< m/s
 };
 FieldSample sampleField(const ParticleStore& particles, std::span<const MaterialDef> materials, const PeriodicBox& box,
-                        float supportRadius, const glm::vec3& point);
+                        const kernels::SmoothingKernel& w, const glm::vec3& point);
 
 }  // namespace tide

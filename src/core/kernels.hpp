@@ -5,14 +5,17 @@
 ///
 /// Poly6, Spiky and Viscosity follow Müller, Charypar & Gross 2003, "Particle-based fluid
 /// simulation for interactive applications", eqs. (20)–(22), in the corrected forms of
-/// SPEC.md §1. The cubic spline is Monaghan 1992 rescaled to support h
-/// (as in SPlisHSPlasH's CubicKernel). Gradients take r⃗ = x_i − x_j and r = |r⃗|.
+/// SPEC.md §1. The smoothing kernel of the incompressible solvers is Monaghan's 1992 cubic
+/// spline rescaled to support h (as in SPlisHSPlasH's CubicKernel) or Wendland's C2.
+/// Gradients take r⃗ = x_i − x_j and r = |r⃗|.
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
 #include <glm/vec3.hpp>
+
+#include <tide/defs.hpp>
 
 namespace tide::kernels {
 
@@ -95,25 +98,40 @@ struct Viscosity {
     [[nodiscard]] float laplacian(float r) const { return r >= h ? 0.0f : lapNorm * (h - r); }
 };
 
-/// Monaghan's cubic B-spline with support h (q = r/h):
-/// σ(6q³ − 6q² + 1) for q ≤ ½, 2σ(1 − q)³ for q ≤ 1, σ = 8/(π h³).
-struct CubicSpline {
+/// The smoothing kernel of the SPH sums, support h (q = r/h), in one of two shapes:
+/// - the cubic B-spline of Monaghan 1992: σ(6q³ − 6q² + 1) for q ≤ ½, 2σ(1 − q)³ for q ≤ 1,
+///   σ = 8/(π h³);
+/// - Wendland's C2 function (Wendland 1995, in 3D as Dehnen & Aly 2012, table 1):
+///   σ(1 − q)⁴(1 + 4q), σ = 21/(2π h³).
+/// The SIMD pair sums (solvers/pair_sums.cpp) evaluate the same expressions.
+struct SmoothingKernel {
     float h, invH, sigma;
-    explicit CubicSpline(float support)
-        : h(support), invH(1.0f / support), sigma(8.0f / (pi * support * support * support)) {}
-    // Both pieces as one expression, 2(1 − q)₊³ − 8(½ − q)₊³, without branches: the pair
-    // loops of the pressure solves evaluate it per neighbour, where q ≤ ½ holds for about a
-    // fifth of them and a branch on it would mispredict.
+    KernelShape shape;
+    explicit SmoothingKernel(float support, KernelShape kernelShape = KernelShape::CubicSpline)
+        : h(support), invH(1.0f / support),
+          sigma((kernelShape == KernelShape::WendlandC2 ? 21.0f / 2.0f : 8.0f) / (pi * support * support * support)),
+          shape(kernelShape) {}
+    // Each piece as one expression without branches on q (the cubic spline's two as
+    // 2(1 − q)₊³ − 8(½ − q)₊³): the pair loops evaluate it per neighbour, where a branch on
+    // q would mispredict. The branch on the shape is the same for every call.
     [[nodiscard]] float value(float r) const {
         const float q = r * invH;
-        const float outer = std::max(1.0f - q, 0.0f), inner = std::max(0.5f - q, 0.0f);
+        const float outer = std::max(1.0f - q, 0.0f);
+        if (shape == KernelShape::WendlandC2) return sigma * outer * outer * outer * outer * (1.0f + 4.0f * q);
+        const float inner = std::max(0.5f - q, 0.0f);
         return sigma * (2.0f * outer * outer * outer - 8.0f * inner * inner * inner);
     }
-    /// dW/dr = σ/h (−6(1 − q)₊² + 24(½ − q)₊²).
+    /// dW/dr: σ/h (−6(1 − q)₊² + 24(½ − q)₊²), or σ/h · (−20 q (1 − q)₊³).
     [[nodiscard]] float derivative(float r) const {
         const float q = r * invH;
-        const float outer = std::max(1.0f - q, 0.0f), inner = std::max(0.5f - q, 0.0f);
+        const float outer = std::max(1.0f - q, 0.0f);
+        if (shape == KernelShape::WendlandC2) return sigma * invH * (-20.0f * q * outer * outer * outer);
+        const float inner = std::max(0.5f - q, 0.0f);
         return sigma * invH * (24.0f * inner * inner - 6.0f * outer * outer);
+    }
+    /// lim r→0 of W'(r)/r, the most negative gradient factor: −12σ/h² or −20σ/h².
+    [[nodiscard]] float gradientFactorAtZero() const {
+        return (shape == KernelShape::WendlandC2 ? -20.0f : -12.0f) * sigma * invH * invH;
     }
     [[nodiscard]] glm::vec3 gradient(const glm::vec3& rij, float r) const {
         if (r <= 0.0f) return glm::vec3(0.0f);
@@ -123,8 +141,11 @@ struct CubicSpline {
     [[nodiscard]] float laplacian(float r) const {
         const float q = r * invH;
         if (q >= 1.0f || r <= 0.0f) return 0.0f;
-        const float second = q <= 0.5f ? sigma * invH * invH * (36.0f * q - 12.0f)
-                                       : sigma * invH * invH * 12.0f * (1.0f - q);
+        float second;
+        if (shape == KernelShape::WendlandC2)
+            second = sigma * invH * invH * (-20.0f * (1.0f - q) * (1.0f - q) * (1.0f - 4.0f * q));
+        else
+            second = q <= 0.5f ? sigma * invH * invH * (36.0f * q - 12.0f) : sigma * invH * invH * 12.0f * (1.0f - q);
         return second + 2.0f * derivative(r) / r;
     }
 };

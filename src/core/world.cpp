@@ -88,18 +88,18 @@ void validateMaterial(const MaterialDef& m) {
         throw std::invalid_argument("material.adhesion: must be >= 0, got " + show(m.adhesion));
 }
 
-/// Σ_k W_poly6(|k|·s) over the cubic lattice: a lattice particle of mass ρ0 / this sum has
-/// exactly the rest density inside a filled block, so blocks start at rest.
-float latticeKernelSum(DensityKernel kernel, float spacing, float h) {
+/// Σ_k W(|k|·s) over the cubic lattice, W the solver's density kernel: a lattice particle of
+/// mass ρ0 / this sum has exactly the rest density inside a filled block, so blocks start at rest.
+float latticeKernelSum(DensityKernel kernel, KernelShape shape, float spacing, float h) {
     const kernels::Poly6 poly6(h);
-    const kernels::CubicSpline cubic(h);
+    const kernels::SmoothingKernel smoothing(h, shape);
     const int reach = static_cast<int>(std::ceil(h / spacing));
     double sum = 0.0;
     for (int z = -reach; z <= reach; ++z)
         for (int y = -reach; y <= reach; ++y)
             for (int x = -reach; x <= reach; ++x) {
                 const glm::vec3 r = spacing * glm::vec3(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
-                sum += kernel == DensityKernel::Poly6 ? poly6.valueSq(glm::dot(r, r)) : cubic.value(glm::length(r));
+                sum += kernel == DensityKernel::Poly6 ? poly6.valueSq(glm::dot(r, r)) : smoothing.value(glm::length(r));
             }
     return static_cast<float>(sum);
 }
@@ -110,6 +110,8 @@ struct World::Impl {
     WorldDef def;
     int threads;
     float h;
+    /// The smoothing kernel of the solver's sums, which the gauges, probes and dye diffusion read too.
+    [[nodiscard]] kernels::SmoothingKernel kernel() const { return kernels::SmoothingKernel(h, def.solver.kernel); }
     std::unique_ptr<Solver> solver;
     float latticeSum;
     PeriodicBox periodic;
@@ -158,7 +160,7 @@ struct World::Impl {
     explicit Impl(const WorldDef& d)
         : def(d), threads(resolveThreadCount(d.threads)), h(d.particleSpacing * d.supportRatio),
           solver(makeSolver(d.solver.method)),
-          latticeSum(latticeKernelSum(solver->densityKernel(), d.particleSpacing, h)),
+          latticeSum(latticeKernelSum(solver->densityKernel(), d.solver.kernel, d.particleSpacing, h)),
           periodic(PeriodicBox::make(d.domainMin, d.domainMax, d.periodic)),
           viscosity(viscosityModel(d.solver.viscosity, solver->defaultViscosity())),
           soundSpeed(d.solver.soundSpeed) {
@@ -628,12 +630,12 @@ void World::addDampingZone(const DampingZoneDef& zone) {
 
 float World::surfaceHeight(float x, float z) const {
     const Impl& w = *impl_;
-    return freeSurfaceHeight(w.particles, w.materials, w.periodic, w.h, x, z);
+    return freeSurfaceHeight(w.particles, w.materials, w.periodic, w.kernel(), x, z);
 }
 
 ProbeSample World::probe(const glm::vec3& point) const {
     const Impl& w = *impl_;
-    const FieldSample s = sampleField(w.particles, w.materials, w.periodic, w.h, point);
+    const FieldSample s = sampleField(w.particles, w.materials, w.periodic, w.kernel(), point);
     return {s.density, s.pressure, s.velocity};
 }
 
@@ -695,7 +697,7 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     const double end = held ? w.time : w.time + dt;
     // Dye spreads over this step's neighbour lists at the positions the solver moved to.
     if (w.pairTables.anyDiffusion())
-        w.diffusion.apply(w.particles, w.neighbors, w.periodic, w.pairTables, w.h, static_cast<float>(dt), w.threads);
+        w.diffusion.apply(w.particles, w.neighbors, w.periodic, w.pairTables, w.kernel(), static_cast<float>(dt), w.threads);
     w.stats.lastPressureIterations = ctx.pressureIterations;
     w.stats.pressureIterationsSum += static_cast<std::uint64_t>(ctx.pressureIterations);
     w.stats.divergenceIterationsSum += static_cast<std::uint64_t>(ctx.divergenceIterations);

@@ -44,7 +44,7 @@ constexpr float kMomentum = 0.7f;  // the default of SolverDef::momentum
 void DfsphBender2017::prepare(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     // Densities (Solenthaler & Pajarola 2008 with Akinci et al. 2012 walls, as
     // sph::computeDensities) and the gradient factors from one square root per pair.
     contrast_.prepare(p, ctx.materials, ctx.threads);
@@ -158,7 +158,7 @@ float DfsphBender2017::densityRate(const StepContext& ctx, std::uint32_t i) cons
 }
 
 template <class PairVector>
-float DfsphBender2017::predictedDensity(const StepContext& ctx, PairVector delta, const kernels::CubicSpline& w,
+float DfsphBender2017::predictedDensity(const StepContext& ctx, PairVector delta, const kernels::SmoothingKernel& w,
                                         std::uint32_t i) const {
     const glm::vec3 xi(positionK_[i]);
     float rho = pair_sums::kernelSum(fluidPairs(ctx, i), positionK_.data(), xi, w, ctx.periodic,
@@ -260,7 +260,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             break;
         // Full Jacobi steps, as the paper takes, for one rest density; with a density contrast
         // the light particles' rows are far from diagonally dominant and full steps diverge.
-        const float weight = (contrast_.uniform() ? 1.0f : kRelaxation) * weightScale_(ctx.supportRadius / ctx.particleSpacing);
+        const float weight = (contrast_.uniform() ? 1.0f : kRelaxation) * weightScale_(ctx.supportRadius / ctx.particleSpacing, ctx.solver.kernel);
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             k_[i] = weight * error_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
             p.warmDivergence[i] += k_[i];
@@ -274,7 +274,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
     const auto nb = static_cast<std::uint32_t>(ctx.boundary.position.size());
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     const float invDt2 = 1.0f / (dt * dt);
     std::vector<float>& kappa = kappa_;
     kappa.resize(n);
@@ -282,7 +282,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     k_.resize(n);
     boundaryK_.resize(nb);
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity,
-                  ctx.supportRadius, ctx.threads, contrast_.scale());
+                  ctx.kernel(), ctx.threads, contrast_.scale());
     // Moving walls are where they will be at the end of the step when the predicted densities are.
     if (ctx.boundary.moving) {
         wallMoved_.resize(nb);
@@ -307,7 +307,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     });
     push();
     const float heavyBall = ctx.solver.momentum >= 0.0f ? ctx.solver.momentum : kMomentum;
-    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing);
+    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing, ctx.solver.kernel);
     // A step the free-fall limit or a short max_dt shortened removes the compression the
     // particles already have (ρ_i − ρ0, what earlier solves left within their tolerance) over
     // the step it would otherwise have taken, not within dt (Baumgarte 1972, "Stabilization of constraints and

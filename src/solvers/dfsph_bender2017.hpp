@@ -39,7 +39,7 @@ namespace tide {
 class DfsphBender2017 final : public Solver {
 public:
     [[nodiscard]] std::string_view name() const override { return "dfsph"; }
-    [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::CubicSpline; }
+    [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::Smoothing; }
     double step(StepContext& ctx) override;
     [[nodiscard]] std::vector<double> carriedState() const override { return {lastDt_}; }
     bool restoreCarriedState(std::span<const double> state) override {
@@ -64,7 +64,7 @@ private:
     /// neighbours close in, so the linear guess misses up to 90 % of the tolerance at CFL 0.4
     /// in a dam break (measured).
     template <class PairVector>
-    [[nodiscard]] float predictedDensity(const StepContext& ctx, PairVector delta, const kernels::CubicSpline& w,
+    [[nodiscard]] float predictedDensity(const StepContext& ctx, PairVector delta, const kernels::SmoothingKernel& w,
                                          std::uint32_t i) const;
     /// Makes the velocity field divergence-free; returns iterations.
     int solveDivergence(StepContext& ctx);

@@ -8,9 +8,8 @@
 namespace tide {
 
 void DyeDiffusion::apply(ParticleStore& p, const NeighborList& neighbors, const PeriodicBox& box,
-                         const MaterialPairs& pairs, float supportRadius, float dt, int threads) {
-    const kernels::CubicSpline w(supportRadius);
-    const float eta2 = 0.01f * 0.25f * supportRadius * supportRadius;
+                         const MaterialPairs& pairs, const kernels::SmoothingKernel& w, float dt, int threads) {
+    const float eta2 = 0.01f * 0.25f * w.h * w.h;
     rate_.resize(p.size());
     parallelFor(p.size(), threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];

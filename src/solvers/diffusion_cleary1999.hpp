@@ -22,7 +22,7 @@ class DyeDiffusion {
 public:
     /// c_i += Δt dc_i/dt over the step's neighbour lists at the current positions.
     void apply(ParticleStore& p, const NeighborList& neighbors, const PeriodicBox& box, const MaterialPairs& pairs,
-               float supportRadius, float dt, int threads);
+               const kernels::SmoothingKernel& w, float dt, int threads);
 
 private:
     std::vector<float> rate_;

@@ -12,8 +12,8 @@
 
 namespace tide {
 
-float latticeJacobiGain(float supportRatio) {
-    const kernels::CubicSpline w(supportRatio);
+float latticeJacobiGain(float supportRatio, KernelShape shape) {
+    const kernels::SmoothingKernel w(supportRatio, shape);
     const int reach = static_cast<int>(std::ceil(supportRatio));
     std::vector<glm::vec3> sites, gradients;
     double squares = 0.0;
@@ -44,11 +44,12 @@ float latticeJacobiGain(float supportRatio) {
     return static_cast<float>(largest / squares);
 }
 
-float jacobiWeightScale(float supportRatio) {
+float jacobiWeightScale(float supportRatio, KernelShape shape) {
     constexpr float kTunedSupport = 2.0f;
-    if (supportRatio <= kTunedSupport + 1e-4f) return 1.0f;  // 0.04 m / 0.02 m may round above 2
+    // 0.04 m / 0.02 m may round above 2
+    if (shape == KernelShape::CubicSpline && supportRatio <= kTunedSupport + 1e-4f) return 1.0f;
     static const float tuned = latticeJacobiGain(kTunedSupport);
-    return std::min(1.0f, tuned / latticeJacobiGain(supportRatio));
+    return std::min(1.0f, tuned / latticeJacobiGain(supportRatio, shape));
 }
 
 }  // namespace tide

@@ -11,31 +11,37 @@
 /// neighbours: 2.8 on the simple cubic lattice at the default support of 2 spacings, 7.5 at 3,
 /// 17.6 at 4. The weights the solves were tuned with at 2 spacings (dfsph's density solve ½,
 /// its divergence solve 1) overshoot beyond ~2.7: at 3 spacings a tank at rest blew up within
-/// two steps. So wider supports scale the weights by max G(2)/max G(s).
+/// two steps. So wider supports scale the weights by max G(2)/max G(s), that of the cubic
+/// spline at 2 spacings; Wendland C2's max G is a little lower (2.6 at 2 spacings, 6.2 at 3).
+
+#include <tide/defs.hpp>
 
 namespace tide {
 
-/// max_k G(k) on the simple cubic lattice of unit spacing, the cubic spline with support
+/// max_k G(k) on the simple cubic lattice of unit spacing, the kernel `shape` with support
 /// `supportRatio` (in spacings), k over the Brillouin zone on a 13³ grid.
-[[nodiscard]] float latticeJacobiGain(float supportRatio);
+[[nodiscard]] float latticeJacobiGain(float supportRatio, KernelShape shape = KernelShape::CubicSpline);
 
-/// The factor for Jacobi weights tuned at the default support (2 spacings):
-/// min(1, latticeJacobiGain(2) / latticeJacobiGain(supportRatio)); exactly 1 up to 2 spacings.
-[[nodiscard]] float jacobiWeightScale(float supportRatio);
+/// The factor for Jacobi weights tuned with the cubic spline at the default support (2 spacings):
+/// min(1, latticeJacobiGain(2) / latticeJacobiGain(supportRatio, shape)); exactly 1 for the
+/// cubic spline up to 2 spacings.
+[[nodiscard]] float jacobiWeightScale(float supportRatio, KernelShape shape = KernelShape::CubicSpline);
 
 /// jacobiWeightScale for a solver's steps, computed again only when the support changes.
 class JacobiWeightScale {
 public:
-    [[nodiscard]] float operator()(float supportRatio) {
-        if (supportRatio != ratio_) {
+    [[nodiscard]] float operator()(float supportRatio, KernelShape shape) {
+        if (supportRatio != ratio_ || shape != shape_) {
             ratio_ = supportRatio;
-            scale_ = jacobiWeightScale(supportRatio);
+            shape_ = shape;
+            scale_ = jacobiWeightScale(supportRatio, shape);
         }
         return scale_;
     }
 
 private:
     float ratio_ = -1.0f, scale_ = 1.0f;
+    KernelShape shape_ = KernelShape::CubicSpline;
 };
 
 }  // namespace tide

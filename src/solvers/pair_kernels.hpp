@@ -18,9 +18,10 @@
 
 namespace tide {
 
-/// The gradient factor F_ij = W'(r_ij)/r_ij of the cubic spline per pair (i, j) of a
+/// The gradient factor F_ij = W'(r_ij)/r_ij of the smoothing kernel per pair (i, j) of a
 /// neighbour list, in its pair order (NeighborList::offset), so that ∇W_ij = F_ij (x_i − x_j).
-/// Kept in 16 bits as a small float: F lies in [−12σ/h², 0] (its value as r → 0), and
+/// Kept in 16 bits as a small float: F lies in [F(0), 0] (−12σ/h² for the cubic spline,
+/// −20σ/h² for Wendland C2: its value as r → 0), and
 /// F / (−12σ/h²) in [2⁻³¹, 1] is coded with 5 exponent and 11 mantissa bits (0 for less), so
 /// every factor is within 2.4e-4 (relative) of its exact value. (A fixed-point code, finer
 /// at half the support, was 1.6 % off near its edge, and the 1 cm tank at rest and a
@@ -34,10 +35,10 @@ public:
     /// values of the last list are lost), for
     /// the kernel `w`, and pair_sums::kPadding zeros after them for the SIMD sums (pair_sums.hpp).
     template <class List>
-    void resize(const List& list, const kernels::CubicSpline& w) {
+    void resize(const List& list, const kernels::SmoothingKernel& w) {
         resizeScratch(values_, list.slotCount() + pair_sums::kPadding);
         std::fill(values_.end() - pair_sums::kPadding, values_.end(), Code{0});
-        unit_ = -12.0f * w.sigma * w.invH * w.invH;
+        unit_ = w.gradientFactorAtZero();
         invUnit_ = 1.0f / unit_;
     }
 
@@ -52,7 +53,7 @@ public:
     }
 
     /// F(r) = W'(r)/r of `w` (the kernel given to resize), coded; 0 at r = 0.
-    [[nodiscard]] Code encode(const kernels::CubicSpline& w, float r) const {
+    [[nodiscard]] Code encode(const kernels::SmoothingKernel& w, float r) const {
         const float f = r > 0.0f ? w.derivative(r) / r : 0.0f;
         const float x = std::min(f * invUnit_, 1.0f);  // NaN (a diverged step) codes as 0
         if (!(x >= kSmallest)) return 0;
@@ -65,7 +66,7 @@ public:
         const float x = std::bit_cast<float>((static_cast<std::uint32_t>(code) + (kLowestExponent << kMantissaBits)) << kDropped);
         return code == 0 ? 0.0f : x;
     }
-    /// The factor of a code's magnitude 1: −12σ/h².
+    /// The factor of a code's magnitude 1: F(0), SmoothingKernel::gradientFactorAtZero.
     [[nodiscard]] float unit() const { return unit_; }
     [[nodiscard]] float invUnit() const { return invUnit_; }
     /// The factor F a code stands for.

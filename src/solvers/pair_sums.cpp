@@ -26,7 +26,7 @@ glm::vec3 delta(const glm::vec3& xi, const glm::vec4& xj, const PeriodicBox& box
 
 template <bool Periodic>
 float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
+                const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial) {
     float sum = initial;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
         const glm::vec4 xj = points[neighbors.at(k)];
@@ -42,7 +42,7 @@ glm::vec4 gradientAndSquaresSum(const Neighbors& neighbors, const glm::vec4* poi
 
 template <bool Periodic>
 float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                        const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                        const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial, const PairKernels& factors,
                         std::uint16_t* codes, glm::vec4* gradients) {
     float sum = initial;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
@@ -127,7 +127,7 @@ float viscousWeight(float wj, float uj, float mui) {
 
 template <bool Periodic, bool Harmonic = false>
 glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
-                     const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                     const glm::vec3& xi, const glm::vec3& vi, const kernels::SmoothingKernel& w, float epsilon,
                      const PeriodicBox& box, float mui = 0.0f) {
     glm::vec3 sum(0.0f);
     for (std::size_t k = 0; k < neighbors.count; ++k) {
@@ -156,7 +156,7 @@ glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm
 
 template <bool Periodic>
 GradientSums kernelGradientSums(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                const kernels::CubicSpline& w, const PeriodicBox& box) {
+                                const kernels::SmoothingKernel& w, const PeriodicBox& box) {
     GradientSums sums;
     for (std::size_t k = 0; k < neighbors.count; ++k) {
         const glm::vec4 xj = points[neighbors.at(k)];
@@ -186,14 +186,14 @@ namespace hn = hwy::HWY_NAMESPACE;
 #if HWY_TARGET == HWY_SCALAR
 // No lanes (GCC before 12.3 compiles Highway's fallback as HWY_SCALAR): the plain loops.
 
-template <bool Periodic, bool Offsets>
+template <bool Periodic, bool Offsets, bool Wendland>
 float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                 const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
+                 const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial) {
     return sequential::kernelSum<Periodic>(neighbors, points, xi, w, box, initial);
 }
-template <bool Periodic, bool Offsets>
+template <bool Periodic, bool Offsets, bool Wendland>
 float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                         const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                         const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial, const PairKernels& factors,
                          std::uint16_t* codes, glm::vec4* gradients) {
     return sequential::kernelSumAndCodes<Periodic>(neighbors, points, xi, w, box, initial, factors, codes, gradients);
 }
@@ -201,9 +201,9 @@ template <bool Periodic, bool Offsets>
 glm::vec3 GradientSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi, const PeriodicBox& box) {
     return sequential::gradientSum<Periodic>(neighbors, points, xi, box);
 }
-template <bool Periodic, bool Offsets, bool Harmonic>
+template <bool Periodic, bool Offsets, bool Wendland, bool Harmonic>
 glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
-                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                      const glm::vec3& xi, const glm::vec3& vi, const kernels::SmoothingKernel& w, float epsilon,
                       const PeriodicBox& box, float mui) {
     return sequential::viscousSum<Periodic, Harmonic>(neighbors, points, velocities, xi, vi, w, epsilon, box, mui);
 }
@@ -222,9 +222,9 @@ glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const gl
                    const glm::vec4& vi, const kernels::Poly6& w, const PeriodicBox& box) {
     return sequential::xsphSum<Periodic>(neighbors, points, velocities, xi, vi, w, box);
 }
-template <bool Periodic, bool Offsets>
+template <bool Periodic, bool Offsets, bool Wendland>
 GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                 const kernels::CubicSpline& w, const PeriodicBox& box) {
+                                 const kernels::SmoothingKernel& w, const PeriodicBox& box) {
     return sequential::kernelGradientSums<Periodic>(neighbors, points, xi, w, box);
 }
 
@@ -270,21 +270,31 @@ HWY_INLINE PairVectors Delta(V xx, V xy, V xz, const Columns& j, const PeriodicB
             tide::HWY_NAMESPACE::NearestImageDelta<Periodic>(xz, j.z, box.period.z, box.half.z)};
 }
 
-/// W/σ of the cubic spline at q = r/h: 2(1 − q)₊³ − 8(½ − q)₊³, as CubicSpline::value.
-HWY_INLINE V SplineOverSigma(V q) {
+/// W/σ of the smoothing kernel at q = r/h, as SmoothingKernel::value: the cubic spline's
+/// 2(1 − q)₊³ − 8(½ − q)₊³, or Wendland C2's (1 − q)₊⁴(1 + 4q).
+template <bool Wendland>
+HWY_INLINE V ValueOverSigma(V q) {
     const D d;
     const V zero = hn::Zero(d);
-    const V outer = hn::Max(hn::Sub(hn::Set(d, 1.0f), q), zero), inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
+    const V outer = hn::Max(hn::Sub(hn::Set(d, 1.0f), q), zero);
+    if constexpr (Wendland) {
+        const V outer2 = hn::Mul(outer, outer);
+        return hn::Mul(hn::Mul(outer2, outer2), hn::MulAdd(hn::Set(d, 4.0f), q, hn::Set(d, 1.0f)));
+    }
+    const V inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
     return hn::Sub(hn::Mul(hn::Set(d, 2.0f), hn::Mul(outer, hn::Mul(outer, outer))),
                    hn::Mul(hn::Set(d, 8.0f), hn::Mul(inner, hn::Mul(inner, inner))));
 }
 
-/// W'(r) h/σ, the cubic spline's derivative less its factor σ/h: 24(½ − q)₊² − 6(1 − q)₊² at
-/// q = r/h, as CubicSpline::derivative.
+/// W'(r) h/σ, the derivative less its factor σ/h, at q = r/h, as SmoothingKernel::derivative:
+/// the cubic spline's 24(½ − q)₊² − 6(1 − q)₊², or Wendland C2's −20 q (1 − q)₊³.
+template <bool Wendland>
 HWY_INLINE V DerivativeOverSigma(V q) {
     const D d;
     const V zero = hn::Zero(d);
-    const V outer = hn::Max(hn::Sub(hn::Set(d, 1.0f), q), zero), inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
+    const V outer = hn::Max(hn::Sub(hn::Set(d, 1.0f), q), zero);
+    if constexpr (Wendland) return hn::Mul(hn::Mul(hn::Mul(hn::Mul(hn::Set(d, -20.0f), q), outer), outer), outer);
+    const V inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
     return hn::Sub(hn::Mul(hn::Set(d, 24.0f), hn::Mul(inner, inner)), hn::Mul(hn::Set(d, 6.0f), hn::Mul(outer, outer)));
 }
 
@@ -341,9 +351,9 @@ HWY_INLINE Columns LoadRows(const glm::vec4* rows, const Neighbors& neighbors, s
 static_assert(NeighborList::kOffsetBlock % hn::MaxLanes(D()) == 0);
 
 
-template <bool Periodic, bool Offsets>
+template <bool Periodic, bool Offsets, bool Wendland>
 float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                 const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
+                 const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z), invH = hn::Set(d, w.invH);
     V sum = hn::Zero(d);
@@ -351,24 +361,30 @@ float KernelSumT(const Neighbors& neighbors, const glm::vec4* points, const glm:
         const Columns j = LoadRows<Offsets>(points, neighbors, k);
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         const V q = hn::Mul(hn::Sqrt(hn::MulAdd(r.x, r.x, hn::MulAdd(r.y, r.y, hn::Mul(r.z, r.z)))), invH);
-        sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), SplineOverSigma(q), sum);
+        sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), ValueOverSigma<Wendland>(q), sum);
     }
     return initial + w.sigma * hn::GetLane(hn::SumOfLanes(d, sum));
 }
 
 /// The lanes' PairKernels::encode(w, r), operation for operation (this file is built with
 /// -ffp-contract=off, so the codes are the scalar ones bit for bit).
-HWY_INLINE hn::Vec<DU16> EncodeFactors(V r, const kernels::CubicSpline& w, float invUnit) {
+template <bool Wendland>
+HWY_INLINE hn::Vec<DU16> EncodeFactors(V r, const kernels::SmoothingKernel& w, float invUnit) {
     const D d;
     const hn::RebindToSigned<D> di;
     const DU16 du16;
     const V zero = hn::Zero(d), one = hn::Set(d, 1.0f);
-    // W'(r) = σ/h (24(½ − q)₊² − 6(1 − q)₊²), as CubicSpline::derivative
+    // W'(r) as SmoothingKernel::derivative: σ/h (24(½ − q)₊² − 6(1 − q)₊²), or σ/h (−20 q (1 − q)₊³)
     const V q = hn::Mul(r, hn::Set(d, w.invH));
-    const V outer = hn::Max(hn::Sub(one, q), zero), inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
-    const V derivative = hn::Mul(hn::Set(d, w.sigma * w.invH),
-                                 hn::Sub(hn::Mul(hn::Mul(hn::Set(d, 24.0f), inner), inner),
-                                         hn::Mul(hn::Mul(hn::Set(d, 6.0f), outer), outer)));
+    const V outer = hn::Max(hn::Sub(one, q), zero);
+    V shape;
+    if constexpr (Wendland) {
+        shape = hn::Mul(hn::Mul(hn::Mul(hn::Mul(hn::Set(d, -20.0f), q), outer), outer), outer);
+    } else {
+        const V inner = hn::Max(hn::Sub(hn::Set(d, 0.5f), q), zero);
+        shape = hn::Sub(hn::Mul(hn::Mul(hn::Set(d, 24.0f), inner), inner), hn::Mul(hn::Mul(hn::Set(d, 6.0f), outer), outer));
+    }
+    const V derivative = hn::Mul(hn::Set(d, w.sigma * w.invH), shape);
     const V f = hn::IfThenElseZero(hn::Gt(r, zero), hn::Div(derivative, r));
     const V scaled = hn::Mul(f, hn::Set(d, invUnit));
     const V x = hn::IfThenElse(hn::Lt(one, scaled), one, scaled);  // std::min: NaN stays NaN, and codes as 0
@@ -378,9 +394,9 @@ HWY_INLINE hn::Vec<DU16> EncodeFactors(V r, const kernels::CubicSpline& w, float
     return hn::DemoteTo(du16, hn::IfThenElseZero(hn::RebindMask(di, hn::Ge(x, hn::Set(d, PairKernels::kSmallest))), code));
 }
 
-template <bool Periodic, bool Offsets>
+template <bool Periodic, bool Offsets, bool Wendland>
 float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                         const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                         const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial, const PairKernels& factors,
                          std::uint16_t* codes, glm::vec4* gradients) {
     const D d;
     const DU16 du16;
@@ -392,8 +408,8 @@ float KernelSumAndCodesT(const Neighbors& neighbors, const glm::vec4* points, co
         const PairVectors d3 = Delta<Periodic>(xx, xy, xz, j, box);
         // Unfused, as the scalar density pass: the codes below are its codes.
         const V r = hn::Sqrt(hn::Add(hn::Add(hn::Mul(d3.x, d3.x), hn::Mul(d3.y, d3.y)), hn::Mul(d3.z, d3.z)));
-        sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), SplineOverSigma(hn::Mul(r, invH)), sum);
-        const auto code = EncodeFactors(r, w, factors.invUnit());
+        sum = hn::MulAdd(hn::IfThenElseZero(hn::FirstN(d, neighbors.count - k), j.w), ValueOverSigma<Wendland>(hn::Mul(r, invH)), sum);
+        const auto code = EncodeFactors<Wendland>(r, w, factors.invUnit());
         if (gradients != nullptr) {  // α's sums over the codes just made
             const V s = hn::Mul(j.w, MagnitudesOf(code, neighbors.count - k));
             const V x = hn::Mul(s, d3.x), y = hn::Mul(s, d3.y), z = hn::Mul(s, d3.z);
@@ -471,9 +487,9 @@ glm::vec4 CappedGradientSquaresT(const Neighbors& neighbors, const glm::vec4* po
             hn::GetLane(hn::SumOfLanes(d, squares))};
 }
 
-template <bool Periodic, bool Offsets, bool Harmonic>
+template <bool Periodic, bool Offsets, bool Wendland, bool Harmonic>
 glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
-                      const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                      const glm::vec3& xi, const glm::vec3& vi, const kernels::SmoothingKernel& w, float epsilon,
                       const PeriodicBox& box, float mui) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
@@ -487,8 +503,8 @@ glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         const V r2 = hn::Add(hn::Add(hn::Mul(r.x, r.x), hn::Mul(r.y, r.y)), hn::Mul(r.z, r.z));
         const V q = hn::Mul(hn::Sqrt(r2), invH);
-        // r W'(r) h/σ = q (24(½ − q)₊² − 6(1 − q)₊²) h², the σ/h² outside the sum
-        const V rDerivative = hn::Mul(q, DerivativeOverSigma(q));
+        // r W'(r)/σ = q (W'(r) h/σ), the σ outside the sum
+        const V rDerivative = hn::Mul(q, DerivativeOverSigma<Wendland>(q));
         V weight;
         if constexpr (Harmonic) {  // 4 μ_i μ_j/(μ_i + μ_j) u_j, masked after the division (0/0 where both are 0)
             const V sum = hn::Add(muI, j.w);
@@ -502,7 +518,7 @@ glm::vec3 ViscousSumT(const Neighbors& neighbors, const glm::vec4* points, const
         sy = hn::MulAdd(s, hn::Sub(vy, v.y), sy);
         sz = hn::MulAdd(s, hn::Sub(vz, v.z), sz);
     }
-    const float scale = w.sigma;  // r W'(r) = σ q (24 …) with q = r/h: σ/h · r = σ q
+    const float scale = w.sigma;  // r W'(r) = σ/h · r · (W'h/σ) = σ q (W'h/σ) with q = r/h
     return scale * glm::vec3(hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)),
                              hn::GetLane(hn::SumOfLanes(d, sz)));
 }
@@ -530,9 +546,9 @@ glm::vec3 XsphSumT(const Neighbors& neighbors, const glm::vec4* points, const gl
     return {hn::GetLane(hn::SumOfLanes(d, sx)), hn::GetLane(hn::SumOfLanes(d, sy)), hn::GetLane(hn::SumOfLanes(d, sz))};
 }
 
-template <bool Periodic, bool Offsets>
+template <bool Periodic, bool Offsets, bool Wendland>
 GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                 const kernels::CubicSpline& w, const PeriodicBox& box) {
+                                 const kernels::SmoothingKernel& w, const PeriodicBox& box) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z), invH = hn::Set(d, w.invH);
     const V zero = hn::Zero(d);
@@ -541,8 +557,8 @@ GradientSums KernelGradientSumsT(const Neighbors& neighbors, const glm::vec4* po
         const Columns j = LoadRows<Offsets>(points, neighbors, k);
         const PairVectors r = Delta<Periodic>(xx, xy, xz, j, box);
         const V length = hn::Sqrt(hn::MulAdd(r.x, r.x, hn::MulAdd(r.y, r.y, hn::Mul(r.z, r.z))));
-        // W'(r)/r h/σ = (24(½ − q)₊² − 6(1 − q)₊²)/r, the σ/h outside the sums; 0 at r = 0 and past the list
-        const V derivative = DerivativeOverSigma(hn::Mul(length, invH));
+        // W'(r)/r h/σ, the σ/h outside the sums; 0 at r = 0 and past the list
+        const V derivative = DerivativeOverSigma<Wendland>(hn::Mul(length, invH));
         const auto counted = hn::And(hn::FirstN(d, neighbors.count - k), hn::Gt(length, zero));
         const V f = hn::IfThenElseZero(counted, hn::Div(derivative, length));
         px = hn::MulAdd(f, r.x, px);
@@ -568,18 +584,26 @@ HWY_INLINE auto Choose(const PeriodicBox& box, const Neighbors& neighbors, F&& f
     if (neighbors.offset != nullptr) return box.any ? f(Yes{}, Yes{}) : f(No{}, Yes{});
     return box.any ? f(Yes{}, No{}) : f(No{}, No{});
 }
+/// Calls f(periodic, offsets, wendland): the kernel's shape a compile-time constant too.
+template <class F>
+HWY_INLINE auto Choose(const PeriodicBox& box, const Neighbors& neighbors, const kernels::SmoothingKernel& w, F&& f) {
+    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
+        if (w.shape == KernelShape::WendlandC2) return f(periodic, offsets, std::true_type{});
+        return f(periodic, offsets, std::false_type{});
+    });
+}
 
 float KernelSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                    const kernels::CubicSpline& w, const PeriodicBox& box, float initial) {
-    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
-        return KernelSumT<periodic(), offsets()>(neighbors, points, xi, w, box, initial);
+                    const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial) {
+    return Choose(box, neighbors, w, [&](auto periodic, auto offsets, auto wendland) HWY_ATTR {
+        return KernelSumT<periodic(), offsets(), wendland()>(neighbors, points, xi, w, box, initial);
     });
 }
 float KernelSumAndCodesImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                            const kernels::CubicSpline& w, const PeriodicBox& box, float initial,
+                            const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial,
                             const PairKernels& factors, std::uint16_t* codes, glm::vec4* gradients) {
-    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
-        return KernelSumAndCodesT<periodic(), offsets()>(neighbors, points, xi, w, box, initial, factors, codes, gradients);
+    return Choose(box, neighbors, w, [&](auto periodic, auto offsets, auto wendland) HWY_ATTR {
+        return KernelSumAndCodesT<periodic(), offsets(), wendland()>(neighbors, points, xi, w, box, initial, factors, codes, gradients);
     });
 }
 glm::vec3 GradientSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
@@ -601,17 +625,17 @@ glm::vec4 CappedGradientSquaresImpl(const Neighbors& neighbors, const glm::vec4*
     });
 }
 glm::vec3 ViscousSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
-                         const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                         const glm::vec3& xi, const glm::vec3& vi, const kernels::SmoothingKernel& w, float epsilon,
                          const PeriodicBox& box) {
-    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
-        return ViscousSumT<periodic(), offsets(), false>(neighbors, points, velocities, xi, vi, w, epsilon, box, 0.0f);
+    return Choose(box, neighbors, w, [&](auto periodic, auto offsets, auto wendland) HWY_ATTR {
+        return ViscousSumT<periodic(), offsets(), wendland(), false>(neighbors, points, velocities, xi, vi, w, epsilon, box, 0.0f);
     });
 }
 glm::vec3 ViscousSumHarmonicImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
-                                 const glm::vec3& xi, const glm::vec3& vi, float mui, const kernels::CubicSpline& w,
+                                 const glm::vec3& xi, const glm::vec3& vi, float mui, const kernels::SmoothingKernel& w,
                                  float epsilon, const PeriodicBox& box) {
-    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
-        return ViscousSumT<periodic(), offsets(), true>(neighbors, points, velocities, xi, vi, w, epsilon, box, mui);
+    return Choose(box, neighbors, w, [&](auto periodic, auto offsets, auto wendland) HWY_ATTR {
+        return ViscousSumT<periodic(), offsets(), wendland(), true>(neighbors, points, velocities, xi, vi, w, epsilon, box, mui);
     });
 }
 glm::vec3 XsphSumImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
@@ -621,9 +645,9 @@ glm::vec3 XsphSumImpl(const Neighbors& neighbors, const glm::vec4* points, const
     });
 }
 GradientSums KernelGradientSumsImpl(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                    const kernels::CubicSpline& w, const PeriodicBox& box) {
-    return Choose(box, neighbors, [&](auto periodic, auto offsets) HWY_ATTR {
-        return KernelGradientSumsT<periodic(), offsets()>(neighbors, points, xi, w, box);
+                                    const kernels::SmoothingKernel& w, const PeriodicBox& box) {
+    return Choose(box, neighbors, w, [&](auto periodic, auto offsets, auto wendland) HWY_ATTR {
+        return KernelGradientSumsT<periodic(), offsets(), wendland()>(neighbors, points, xi, w, box);
     });
 }
 const char* InstructionSetImpl() { return hwy::TargetName(HWY_TARGET); }
@@ -676,14 +700,14 @@ const Targets& targets() { return kTargets; }
 }  // namespace
 
 float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                const kernels::CubicSpline& w, const PeriodicBox& box, float initial, Order order) {
+                const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial, Order order) {
     if (order == Order::Sequential)
         return box.any ? sequential::kernelSum<true>(neighbors, points, xi, w, box, initial)
                        : sequential::kernelSum<false>(neighbors, points, xi, w, box, initial);
     return targets().kernelSum(neighbors, points, xi, w, box, initial);
 }
 float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                        const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                        const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial, const PairKernels& factors,
                         std::uint16_t* codes, Order order, glm::vec4* gradients) {
     if (order == Order::Sequential)
         return box.any ? sequential::kernelSumAndCodes<true>(neighbors, points, xi, w, box, initial, factors, codes, gradients)
@@ -709,12 +733,12 @@ glm::vec4 cappedGradientSquares(const Neighbors& neighbors, const glm::vec4* poi
     return targets().cappedGradientSquares(neighbors, points, xi, mi, box);
 }
 glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
-                     const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                     const glm::vec3& xi, const glm::vec3& vi, const kernels::SmoothingKernel& w, float epsilon,
                      const PeriodicBox& box) {
     return targets().viscousSum(neighbors, points, velocities, xi, vi, w, epsilon, box);
 }
 glm::vec3 viscousSumHarmonic(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
-                             const glm::vec3& xi, const glm::vec3& vi, float mui, const kernels::CubicSpline& w,
+                             const glm::vec3& xi, const glm::vec3& vi, float mui, const kernels::SmoothingKernel& w,
                              float epsilon, const PeriodicBox& box) {
     return targets().viscousSumHarmonic(neighbors, points, velocities, xi, vi, mui, w, epsilon, box);
 }
@@ -723,7 +747,7 @@ glm::vec3 xsphSum(const Neighbors& neighbors, const glm::vec4* points, const glm
     return targets().xsphSum(neighbors, points, velocities, xi, vi, w, box);
 }
 GradientSums kernelGradientSums(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                const kernels::CubicSpline& w, const PeriodicBox& box) {
+                                const kernels::SmoothingKernel& w, const PeriodicBox& box) {
     return targets().kernelGradientSums(neighbors, points, xi, w, box);
 }
 const char* instructionSet() { return HWY_DYNAMIC_DISPATCH(InstructionSetImpl)(); }

@@ -56,7 +56,7 @@ enum class Order {
 
 /// initial + Σ_j w_j W(|x_i − x_j|) of the cubic spline `w`, with (x_j, w_j) = points[j].
 float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                const kernels::CubicSpline& w, const PeriodicBox& box, float initial = 0.0f, Order order = Order::Lanes);
+                const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial = 0.0f, Order order = Order::Lanes);
 
 /// kernelSum, and each pair's coded gradient factor, factors.encode(w, r_ij), written to
 /// codes[k] for k < count (and nothing past it: the next list's codes may be another thread's);
@@ -64,7 +64,7 @@ float kernelSum(const Neighbors& neighbors, const glm::vec4* points, const glm::
 /// with m_ij = PairKernels::magnitude(code_ij): the two sums of DFSPH's factor α_i (Bender &
 /// Koschier 2017, eq. 11) in units of PairKernels::unit(), from the same pass.
 float kernelSumAndCodes(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                        const kernels::CubicSpline& w, const PeriodicBox& box, float initial, const PairKernels& factors,
+                        const kernels::SmoothingKernel& w, const PeriodicBox& box, float initial, const PairKernels& factors,
                         std::uint16_t* codes, Order order = Order::Lanes, glm::vec4* gradients = nullptr);
 
 /// Σ_j w_j m_ij (x_i − x_j), with m_ij = PairKernels::magnitude(code_ij).
@@ -86,14 +86,14 @@ glm::vec4 cappedGradientSquares(const Neighbors& neighbors, const glm::vec4* poi
 /// (x_j, w_j) = points[j] and (v_j, u_j) = velocities[j]: the fluid part of Morris et al.'s
 /// 1997 viscosity (solvers/viscosity.cpp).
 glm::vec3 viscousSum(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
-                     const glm::vec3& xi, const glm::vec3& vi, const kernels::CubicSpline& w, float epsilon,
+                     const glm::vec3& xi, const glm::vec3& vi, const kernels::SmoothingKernel& w, float epsilon,
                      const PeriodicBox& box);
 
 /// viscousSum between materials of different viscosities: Σ_j μ̄_ij u_j r W'(r)/(r² + ε) (v_i − v_j),
 /// with (x_j, μ_j) = points[j], (v_j, u_j) = velocities[j] and μ̄_ij = 4 μ_i μ_j/(μ_i + μ_j) (0 where
 /// both are 0): twice the pair's harmonic mean, 2μ for equal viscosities (solvers/viscosity.cpp).
 glm::vec3 viscousSumHarmonic(const Neighbors& neighbors, const glm::vec4* points, const glm::vec4* velocities,
-                             const glm::vec3& xi, const glm::vec3& vi, float mui, const kernels::CubicSpline& w,
+                             const glm::vec3& xi, const glm::vec3& vi, float mui, const kernels::SmoothingKernel& w,
                              float epsilon, const PeriodicBox& box);
 
 /// Σ_j (2 w_j/(u_i + u_j)) (h² − r²)₊³ (v_j − v_i), r = |x_i − x_j|, with (x_j, w_j) = points[j]
@@ -109,7 +109,7 @@ struct GradientSums {
     glm::vec3 plain{0.0f}, weighted{0.0f};
 };
 GradientSums kernelGradientSums(const Neighbors& neighbors, const glm::vec4* points, const glm::vec3& xi,
-                                const kernels::CubicSpline& w, const PeriodicBox& box);
+                                const kernels::SmoothingKernel& w, const PeriodicBox& box);
 
 /// The instruction set the sums run on here (e.g. "AVX2"), for reports.
 const char* instructionSet();

@@ -39,7 +39,7 @@ constexpr double kUselessHalving = 0.9;
 // at rest instead of 53, and 8 instead of 13 on the dam break.
 void PcisphSolenthaler2009::computeDelta(StepContext& ctx, float dt) {
     ParticleStore& p = ctx.particles;
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     delta_.resize(p.size());
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
@@ -79,7 +79,7 @@ void PcisphSolenthaler2009::predictPositions(StepContext& ctx, float dt) {
 
 void PcisphSolenthaler2009::predictCompression(StepContext& ctx, float dt) {
     ParticleStore& p = ctx.particles;
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     const float self = w.value(0.0f);
     error_.resize(p.size());
     residual_.resize(p.size());
@@ -114,7 +114,7 @@ double PcisphSolenthaler2009::meanRelativeCompression(const StepContext& ctx) co
 
 void PcisphSolenthaler2009::computePressureAccel(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     pressureAccel_.resize(p.size());
     // ρ0 rather than ρ in p/ρ², as δ assumes: free-surface particles (ρ < ρ0) would otherwise
     // be pushed harder than the correction predicted.
@@ -157,7 +157,7 @@ PcisphSolenthaler2009::Solve PcisphSolenthaler2009::solvePressure(StepContext& c
     // The walls' hydrostatic part acts from the start, before any fluid pressure.
     computePressureAccel(ctx);
     Solve solve;
-    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing);
+    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing, ctx.solver.kernel);
     for (; solve.iterations < ctx.solver.maxIterations; ++solve.iterations) {
         predictPositions(ctx, dt);
         predictCompression(ctx, dt);
@@ -185,7 +185,7 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
     const auto n = p.size();
     sph::computeDensities(ctx);
     contrast_.prepare(p, ctx.materials, ctx.threads);
-    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity, ctx.supportRadius,
+    wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity, ctx.kernel(),
                   ctx.threads, contrast_.scale());
     ctx.lap(Phase::Density);
     const float tensionAccel = sph::addNonPressureForces(ctx, accel_);

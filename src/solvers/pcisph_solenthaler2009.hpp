@@ -31,7 +31,7 @@ namespace tide {
 class PcisphSolenthaler2009 final : public Solver {
 public:
     [[nodiscard]] std::string_view name() const override { return "pcisph"; }
-    [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::CubicSpline; }
+    [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::Smoothing; }
     double step(StepContext& ctx) override;
     [[nodiscard]] std::vector<double> carriedState() const override { return {dtCap_}; }
     bool restoreCarriedState(std::span<const double> state) override {

@@ -14,6 +14,7 @@
 #include <tide/particles.hpp>
 
 #include "boundary/boundary_particles.hpp"
+#include "core/kernels.hpp"
 #include "core/material_pairs.hpp"
 #include "core/phase_clock.hpp"
 #include "core/periodic_box.hpp"
@@ -59,14 +60,17 @@ struct StepContext {
     /// x_a − x_b to the nearest periodic image: every pair vector of a solver, fluid–fluid
     /// and fluid–boundary, goes through this (the plain difference without periodic axes).
     [[nodiscard]] glm::vec3 delta(const glm::vec3& a, const glm::vec3& b) const { return periodic.delta(a, b); }
+    /// The smoothing kernel of the sums (SolverDef::kernel), support h.
+    [[nodiscard]] kernels::SmoothingKernel kernel() const { return kernels::SmoothingKernel(supportRadius, solver.kernel); }
     /// Books the time since the last lap to `phase`.
     void lap(Phase phase) const {
         if (clock) clock->lap(phase);
     }
 };
 
-/// The kernel a solver computes density with: particle masses are calibrated with it.
-enum class DensityKernel { Poly6, CubicSpline };
+/// The kernel a solver computes density with (Smoothing: SolverDef::kernel): particle masses
+/// are calibrated with it.
+enum class DensityKernel { Poly6, Smoothing };
 
 /// A pressure/viscosity solver. step() computes densities and forces for the current
 /// positions, picks a stable dt ≤ ctx.maxDt, and advances velocities and positions.

@@ -35,7 +35,7 @@ inline constexpr float kBoundaryPressureMirror = 2.0f;
 /// SIMD lanes (pair_sums::kernelSum).
 inline void computeDensities(StepContext& ctx, const glm::vec4* positionMass = nullptr) {
     ParticleStore& p = ctx.particles;
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     const float self = w.value(0.0f);
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];

@@ -27,7 +27,7 @@ bool anyTension(const StepContext& ctx) { return ctx.pairs != nullptr && ctx.pai
 void computeNormals(const StepContext& ctx, std::vector<glm::vec3>& normals) {
     const ParticleStore& p = ctx.particles;
     const MaterialPairs& pairs = *ctx.pairs;
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     normals.assign(p.size(), glm::vec3(0.0f));
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const MaterialIndex a = p.material[i];

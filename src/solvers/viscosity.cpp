@@ -57,7 +57,7 @@ inline float pairViscositySum(float mui, float muj) {
 
 void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
     const ParticleStore& p = ctx.particles;
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     const float h2 = ctx.supportRadius * ctx.supportRadius * 0.25f;  // smoothing length = support / 2
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
@@ -89,7 +89,7 @@ void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
 
 void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
     const ParticleStore& p = ctx.particles;
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     const float h2 = ctx.supportRadius * ctx.supportRadius * 0.25f;  // smoothing length = support / 2
     // One viscosity and the solver's packed rows: the fluid sum in SIMD lanes, 2μ Σ_j (m_j/ρ_j) f (v_i − v_j);
     // with viscosityRows, Σ_j (m_j/ρ_j) μ̄_ij f (v_i − v_j) (μ̄_ij = 2μ within rounding where they are equal).

@@ -46,10 +46,10 @@ double WcsphBecker2007::step(StepContext& ctx) {
         if (lanes) rows_[i] = glm::vec4(p.position[i], p.mass[i] * kappa_[i] / p.density[i]);
     });
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity,
-                  ctx.supportRadius, ctx.threads, contrast_.scale());
+                  ctx.kernel(), ctx.threads, contrast_.scale());
     wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa_, scaledKappa_, ctx.threads), ctx.threads);
     const auto wallKappa = wall_.kappa();
-    const kernels::CubicSpline w(ctx.supportRadius);
+    const kernels::SmoothingKernel w = ctx.kernel();
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         // Density contrast (Solenthaler & Pajarola 2008, eq. 6): F_i = −Σ_j (p_i V_i² + p_j V_j²) ∇W_ij,

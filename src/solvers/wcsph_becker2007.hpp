@@ -26,7 +26,7 @@ namespace tide {
 class WcsphBecker2007 final : public Solver {
 public:
     [[nodiscard]] std::string_view name() const override { return "wcsph"; }
-    [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::CubicSpline; }
+    [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::Smoothing; }
     double step(StepContext& ctx) override;
 
 private:

@@ -1,0 +1,37 @@
+// Scene files' solver keys that the World takes as they are: the kernel and the support
+// that goes with it, and the divergence solve's own tolerance.
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include <tide/io/scene.hpp>
+
+namespace {
+
+using namespace tide;
+
+io::Scene parseWithSolver(const std::string& solver) {
+    const std::string text = R"({"domain": {"min": [0, 0, 0], "max": [0.2, 0.2, 0.2]}, "particle_spacing": 0.02,
+  "end_time": 0.1, "materials": [{"name": "water", "density": 1000}],
+  "blocks": [{"min": [0, 0, 0], "max": [0.1, 0.1, 0.1], "material": "water"}], "solver": )" + solver + "}";
+    return io::parseScene(text, "solver.json", ".");
+}
+
+TEST(SceneSolver, KernelChoosesItsSupportUnlessTheSceneSetsOne) {
+    const io::Scene cubic = parseWithSolver(R"({"kernel": "cubic_spline"})");
+    EXPECT_EQ(cubic.world.solver.kernel, KernelShape::CubicSpline);
+    EXPECT_EQ(cubic.world.supportRatio, 2.0f);
+    const io::Scene wendland = parseWithSolver(R"({"kernel": "wendland_c2"})");
+    EXPECT_EQ(wendland.world.solver.kernel, KernelShape::WendlandC2);
+    EXPECT_EQ(wendland.world.supportRatio, kWendlandSupportRatio);
+    const io::Scene narrow = parseWithSolver(R"({"kernel": "wendland_c2", "support_ratio": 2.5})");
+    EXPECT_EQ(narrow.world.supportRatio, 2.5f);
+    EXPECT_EQ(parseWithSolver("{}").world.solver.kernel, KernelShape::CubicSpline);
+}
+
+TEST(SceneSolver, DivergenceToleranceDefaultsToTheDensitys) {
+    EXPECT_LT(parseWithSolver("{}").world.solver.maxDivergenceError, 0.0f);  // follows max_density_error
+    EXPECT_EQ(parseWithSolver(R"({"max_divergence_error": 0.001})").world.solver.maxDivergenceError, 0.001f);
+}
+
+}  // namespace
