@@ -1,6 +1,6 @@
 // Where still water stops being still: a block of water at rest in a tank (closed in x,
 // z one periodic cell unless --closed) and, every --every seconds, the RMS and the largest
-// speed of the particles in each layer one spacing thick from the floor up. The particles of
+// speed and the mean density error of the particles in each layer one spacing thick from the floor up. The particles of
 // the cubic lattice the water starts on rearrange under the hydrostatic pressure from the
 // floor up, at a rate that grows with that pressure and with the kernel support
 // (docs/robustness.md § Still water at fine spacings); this shows when and where, and with
@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     try {
         tide::World world = tide::scenarios::stillTank(def, tank.length, tank.depth, tank.widthInSpacings(), closed);
         const int layers = static_cast<int>(std::lround(tank.depth / tank.spacing));
-        std::printf("%s, spacing %.4f m, support %.2f spacings, %u particles, %d layers; speeds in mm/s, floor first\n",
+        std::printf("%s, spacing %.4f m, support %.2f spacings, %u particles, %d layers; speeds in mm/s, rho as (ρ/ρ0 − 1) in 0.01 %, floor first\n",
                     tank.solver.c_str(), tank.spacing, tank.supportRatio, world.particles().size(), layers);
         if (settle > 0.0) {
             const tide::SettleReport r = world.settle(settle, quietSpeed);
@@ -55,18 +55,21 @@ int main(int argc, char** argv) {
         for (int n = 0; n < reports; ++n) {
             world.advance(every);
             const tide::ParticleStore& p = world.particles();
-            std::vector<double> sum(layers, 0.0), count(layers, 0.0), largest(layers, 0.0);
+            std::vector<double> sum(layers, 0.0), count(layers, 0.0), largest(layers, 0.0), density(layers, 0.0);
             for (std::uint32_t i = 0; i < p.size(); ++i) {
                 const int layer = std::clamp(static_cast<int>(p.position[i].y / tank.spacing), 0, layers - 1);
                 const double speed = glm::length(p.velocity[i]);
                 sum[layer] += speed * speed;
                 count[layer] += 1.0;
                 largest[layer] = std::max(largest[layer], speed);
+                density[layer] += p.density[i] / 1000.0 - 1.0;  // the tank's water: ρ0 = 1000
             }
             std::printf("t %.3f s, max %.4f m/s\n  rms:", world.time(), world.stats().maxSpeed);
             for (int l = 0; l < layers; ++l) std::printf(" %3.0f", count[l] > 0.0 ? 1e3 * std::sqrt(sum[l] / count[l]) : 0.0);
             std::printf("\n  max:");
             for (int l = 0; l < layers; ++l) std::printf(" %3.0f", 1e3 * largest[l]);
+            std::printf("\n  rho:");
+            for (int l = 0; l < layers; ++l) std::printf(" %3.0f", count[l] > 0.0 ? 1e4 * density[l] / count[l] : 0.0);
             std::printf("\n");
         }
     } catch (const std::exception& e) {

@@ -20,8 +20,7 @@
 
 #include "mode_energy.hpp"
 #include "tank_options.hpp"
-#include "testing/scenarios.hpp"
-#include "testing/wave_analysis.hpp"
+#include "testing/standing_mode.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"Frequency of the first standing-wave mode of a closed tank against linear theory"};
@@ -46,63 +45,39 @@ int main(int argc, char** argv) {
     CLI11_PARSE(app, argc, argv);
 
     const float length = tank.length, depth = tank.depth;
-    const double g = 9.81, k = std::numbers::pi / length, omega = std::sqrt(g * k * std::tanh(k * depth));
+    const double g = 9.81, k = std::numbers::pi / length;
     try {
         const float extent = periodic ? 2.0f * length : length;
-        tide::WorldDef def = tank.worldDef();
-        def.periodic.x = periodic;
-        tide::World world = tide::scenarios::stillTank(def, extent, depth, tank.widthInSpacings());
+        const tide::WorldDef def = tank.worldDef();
+        tide::World world = tide::scenarios::standingModeTank(def, length, depth, tank.widthInSpacings(), periodic);
         if (settle > 0.0) {
             // Settled with the solver's default XSPH, as the flume test does: without it the
             // settling motion does not die down (25–33 mm/s RMS left after 8 s in the periodic tank).
             tide::WorldDef settling = def;
             settling.solver.xsph = -1.0f;
-            tide::World settled = tide::scenarios::stillTank(settling, extent, depth, tank.widthInSpacings());
+            tide::World settled = tide::scenarios::standingModeTank(settling, length, depth, tank.widthInSpacings(), periodic);
             settled.settle(settle);
             world.restoreState(settled.saveState());
         }
-        // Velocity potential φ = (aω / (k sinh kd)) cosh(ky) cos(kx) at t = 0 (y from the floor).
-        const auto& p = world.particles();
-        auto v = world.velocities();
-        const double scale = amplitude * omega / std::sinh(k * depth);
-        for (std::uint32_t i = 0; i < p.size(); ++i) {
-            const double x = p.position[i].x, y = p.position[i].y;
-            v[i] = glm::vec3(static_cast<float>(-scale * std::cosh(k * y) * std::sin(k * x)),
-                             static_cast<float>(scale * std::sinh(k * y) * std::cos(k * x)), 0.0f);
-        }
-        tide::waves::Record mode{0.01, 0.01, {}};
-        const float z = 0.5f * world.def().domainMax.z;
-        const int samples = static_cast<int>(std::lround(seconds / mode.dt));
-        const int energyEvery = static_cast<int>(std::lround(energy / mode.dt));
-        // Gauges every 2 cm: clear of the end walls, or over the whole period.
-        const float firstGauge = periodic ? 0.0f : 0.04f, lastGauge = periodic ? extent - 0.02f : length - 0.04f;
-        for (int n = 0; n < samples; ++n) {
-            world.advance(mode.dt);
-            double sum = 0.0;
-            int count = 0;
-            for (float x = firstGauge; x < lastGauge + 1e-4f; x += 0.02f) {
-                const float height = world.surfaceHeight(x, z);
-                if (!std::isfinite(height)) continue;
-                sum += (height - depth) * std::cos(k * x);
-                ++count;
-            }
-            mode.eta.push_back(count > 0 ? 2.0 * sum / count : 0.0);
-            if (energyEvery > 0 && (n + 1) % energyEvery == 0) {
-                const tide::bench::ModeEnergy e = tide::bench::modeEnergy(world.particles(), k, g, extent, 2.0f * depth);
-                std::printf("t %.2f s: mode %+.4f m; kinetic %.4f J, kinetic + potential %.4f J; off the mode: smooth %.4f J, "
-                            "particle-scale %.4f J, RMS by 3 cm layer from the floor (mm/s):",
-                            (n + 1) * mode.dt, mode.eta.back(), e.kinetic, e.total, e.smoothResidual, e.particleScale);
-                for (const double rms : e.particleScaleRms) std::printf(" %.0f", 1e3 * rms);
-                std::printf("\n");
-            }
-        }
-        const tide::waves::DampedFit fit = tide::waves::fitDampedOscillation(mode, 0.7 * omega, 1.3 * omega, 2.0);
+        const int energyEvery = static_cast<int>(std::lround(energy / 0.01));
+        int sampleCount = 0;
+        const auto report = [&](const tide::World& w, double eta) {
+            if (energyEvery <= 0 || ++sampleCount % energyEvery != 0) return;
+            const tide::bench::ModeEnergy e = tide::bench::modeEnergy(w.particles(), k, g, extent, 2.0f * depth);
+            std::printf("t %.2f s: mode %+.4f m; kinetic %.4f J, kinetic + potential %.4f J; off the mode: smooth %.4f J, "
+                        "particle-scale %.4f J, RMS by 3 cm layer from the floor (mm/s):",
+                        w.time(), eta, e.kinetic, e.total, e.smoothResidual, e.particleScale);
+            for (const double rms : e.particleScaleRms) std::printf(" %.0f", 1e3 * rms);
+            std::printf("\n");
+        };
+        const tide::scenarios::StandingMode mode = tide::scenarios::runStandingMode(world, length, depth, amplitude, seconds, report);
+        const tide::waves::DampedFit& fit = mode.fit;
         const tide::WorldStats& s = world.stats();
         std::printf("%s, spacing %.4f m, support %.2f spacings, a = %.4f m, L = %.3f m, d = %.3f m: omega %.4f rad/s "
                     "against %.4f (%+.2f %%), amplitude %.4f m, decay %.3f 1/s, fit residual %.1e m; %llu steps, %.1f "
                     "pressure iterations a step%s\n",
-                    tank.solver.c_str(), tank.spacing, tank.supportRatio, amplitude, length, depth, fit.omega, omega,
-                    100.0 * (fit.omega / omega - 1.0), fit.amplitude, fit.beta, fit.rmsResidual,
+                    tank.solver.c_str(), tank.spacing, tank.supportRatio, amplitude, length, depth, fit.omega, mode.omegaTheory,
+                    100.0 * mode.frequencyError(), fit.amplitude, fit.beta, fit.rmsResidual,
                     static_cast<unsigned long long>(s.steps), static_cast<double>(s.pressureIterationsSum) / s.steps,
                     periodic ? " (periodic in x)" : "");
     } catch (const std::exception& e) {

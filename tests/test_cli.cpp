@@ -94,6 +94,8 @@ std::vector<BrokenScene> brokenScenes() {
         {"bad equation of state", smallScene(R"(, "solver": {"equation_of_state": "ideal gas"})"), "solver.equation_of_state"},
         {"cfl above one", smallScene(R"(, "solver": {"cfl": 4})"), "solver.cfl"},
         {"momentum of one", smallScene(R"(, "solver": {"momentum": 1})"), "solver.momentum"},
+        {"shifting above one", smallScene(R"(, "solver": {"shifting": 2})"), "solver.shifting"},
+        {"shifting with wcsph", smallScene(R"(, "solver": {"method": "wcsph", "shifting": 0.2})"), "solver.shifting"},
         {"negative divergence iterations", smallScene(R"(, "solver": {"min_divergence_iterations": -1})"),
          "solver.min_divergence_iterations"},
         {"divergence tolerance of zero", smallScene(R"(, "solver": {"max_divergence_error": 0})"),

@@ -1,5 +1,5 @@
 // Scene files' solver keys that the World takes as they are: the kernel and the support
-// that goes with it, and the divergence solve's own tolerance.
+// that goes with it, the divergence solve's own tolerance, and particle shifting.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -32,6 +32,11 @@ TEST(SceneSolver, KernelChoosesItsSupportUnlessTheSceneSetsOne) {
 TEST(SceneSolver, DivergenceToleranceDefaultsToTheDensitys) {
     EXPECT_LT(parseWithSolver("{}").world.solver.maxDivergenceError, 0.0f);  // follows max_density_error
     EXPECT_EQ(parseWithSolver(R"({"max_divergence_error": 0.001})").world.solver.maxDivergenceError, 0.001f);
+}
+
+TEST(SceneSolver, ShiftingIsOffUnlessTheSceneSetsIt) {
+    EXPECT_EQ(parseWithSolver("{}").world.solver.shifting, 0.0f);
+    EXPECT_EQ(parseWithSolver(R"({"shifting": 0.2})").world.solver.shifting, 0.2f);
 }
 
 }  // namespace

@@ -38,6 +38,12 @@ TEST(World, RejectsBadDefinitionsNamingTheField) {
     expectRejected(with([](WorldDef& d) { d.solver.method = "sph-of-my-dreams"; }), "solver.method");
     expectRejected(with([](WorldDef& d) { d.solver.cflNumber = 3.0f; }), "solver.cflNumber");
     expectRejected(with([](WorldDef& d) { d.solver.momentum = 1.5f; }), "solver.momentum");
+    expectRejected(with([](WorldDef& d) { d.solver.shifting = -0.1f; }), "solver.shifting");
+    expectRejected(with([](WorldDef& d) {
+                       d.solver.method = "wcsph";
+                       d.solver.shifting = 0.2f;
+                   }),
+                   "solver.shifting");
     expectRejected(with([](WorldDef& d) { d.solver.minDivergenceIterations = -2; }), "solver.minDivergenceIterations");
     expectRejected(with([](WorldDef& d) { d.solver.maxDivergenceError = 0.0f; }), "solver.maxDivergenceError");
     expectRejected(with([](WorldDef& d) { d.solver.minDt = 1.0f; }), "solver.minDt");

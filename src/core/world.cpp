@@ -63,6 +63,10 @@ void validateWorldDef(const WorldDef& d) {
         throw std::invalid_argument("solver.soundSpeed: must be >= 0 (0 = automatic), got " + show(s.soundSpeed));
     if (s.xsph >= 0.0f) requireInRange("solver.xsph", s.xsph, 0.0f, 1.0f);
     if (s.momentum >= 0.0f) requireInRange("solver.momentum", s.momentum, 0.0f, 0.95f);
+    requireInRange("solver.shifting", s.shifting, 0.0f, 1.0f);
+    if (s.shifting > 0.0f && s.method != "dfsph")
+        throw std::invalid_argument("solver.shifting: only the dfsph solver shifts particles, got " + show(s.shifting) +
+                                    " with solver \"" + s.method + "\"");
     requireInRange("solver.maxDensityError", s.maxDensityError, 1e-6f, 0.5f);
     if (s.maxDivergenceError >= 0.0f) requireInRange("solver.maxDivergenceError", s.maxDivergenceError, 1e-6f, 0.5f);
     if (s.minDivergenceIterations < -1)

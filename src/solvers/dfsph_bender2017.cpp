@@ -8,6 +8,7 @@
 
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
+#include "solvers/shifting_lind2012.hpp"
 #include "solvers/sph_sums.hpp"
 #include "solvers/time_step.hpp"
 
@@ -479,8 +480,13 @@ double DfsphBender2017::step(StepContext& ctx) {
     // (a step shortened to land on a frame mixes in the last report by the same weight).
     const float lastWeight = static_cast<float>(lastDt_ / (lastDt_ + dt)), weight = 1.0f - lastWeight;
     const float smoothing = static_cast<float>(std::min(1.0, dt / driftTime));
+    // ∇C_i = Σ_j V_j ∇W_ij from this step's gradient sums (Σ_j m_j ∇W_ij, or m_i Σ_j ∇W_ij
+    // with several rest densities: every particle fills one lattice volume) over ρ_i.
+    const FickianShifting shifting(ctx.solver.shifting, ctx.particleSpacing, ctx.supportRadius);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         p.position[i] += dtf * p.velocity[i];
+        if (shifting.shifts(ctx.neighbors.of(i).size(), ctx.boundaryNeighbors.of(i).size()))
+            p.position[i] += shifting.displacement(fluidGradient_[i] / p.density[i]);
         const float meanKappa = weight * kappa_[i] + lastWeight * p.warmKappa[i];
         p.warmKappa[i] = kappa_[i];
         // The divergence solve's velocity change (its κᵛ·Δt summed in warmDivergence) acts over this step.
