@@ -44,7 +44,7 @@ int main(int argc, char** argv) {
     try {
         tide::World world = tide::scenarios::stillTank(def, tank.length, tank.depth, tank.widthInSpacings(), closed);
         const int layers = static_cast<int>(std::lround(tank.depth / tank.spacing));
-        std::printf("%s, spacing %.4f m, support %.2f spacings, %u particles, %d layers; speeds in mm/s, rho as (ρ/ρ0 − 1) in 0.01 %, floor first\n",
+        std::printf("%s, spacing %.4f m, support %.2f spacings, %u particles, %d layers; speeds in mm/s, rho as (ρ/ρ0 − 1) in 0.01 %%, floor first\n",
                     tank.solver.c_str(), tank.spacing, tank.supportRatio, world.particles().size(), layers);
         if (settle > 0.0) {
             const tide::SettleReport r = world.settle(settle, quietSpeed);
