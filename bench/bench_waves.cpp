@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
     // guard only.
     solver.maxIterations = 1000;
     // Particle shifting as the wave scenes: at 2 cm it took the loss at 5 wave lengths from
-    // 48.1 to 28.1 % (docs/waves.md § Particle shifting); `--shifting 0` for the figures before.
+    // 48.1 to 22.0–28.1 % (docs/waves.md § Particle shifting); `--shifting 0` for the figures before.
     solver.shifting = 0.2f;
     tide::MaterialDef water;
     float supportRatio = tide::WorldDef{}.supportRatio;

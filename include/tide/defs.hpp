@@ -111,7 +111,7 @@ struct SolverDef {
     /// δr = −shifting · s² · Σ_j V_j ∇W_ij (s the particle spacing), down the gradient of the
     /// particle concentration, so the packing stays even without storing the energy the
     /// pressure's own regularisation would. Waves keep their height far longer (docs/waves.md:
-    /// 0.2 took a 2 cm flume's loss at 5 wave lengths from 48 % to 28 %); 0 (the default)
+    /// 0.2 took a 2 cm flume's loss at 5 wave lengths from 48 % to 22–28 %); 0 (the default)
     /// switches it off.
     float shifting = 0.0f;
     /// Incompressible solvers (dfsph, pcisph) iterate until the mean compression
