@@ -114,7 +114,7 @@ int main(int argc, char** argv) {
     // after step and collapse at 0.03 s (docs/waves.md § Waves that last); here the cap is a
     // guard only.
     solver.maxIterations = 1000;
-    // Particle shifting as the wave scenes: at 2 cm it took the loss at 5 wave lengths from
+    // Particle shifting as scenes/wave_tank.json: at 2 cm it took the loss at 5 wave lengths from
     // 48.1 to 22.0–28.1 % (docs/waves.md § Particle shifting); `--shifting 0` for the figures before.
     solver.shifting = 0.2f;
     tide::MaterialDef water;

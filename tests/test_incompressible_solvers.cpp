@@ -125,7 +125,7 @@ TEST(DfsphSolver, WendlandHydrostaticTankFromTheLatticeMatchesRhoGD) {
     EXPECT_GT(h.meanDt, 2e-3);
 }
 
-// Particle shifting (solver.shifting 0.2, as the wave scenes) in the same tank from the
+// Particle shifting (solver.shifting 0.2, as scenes/wave_tank.json) in the same tank from the
 // lattice. Measured at 2 s (tide_rest_layers --closed --length 0.24 --seconds 2 --shifting
 // 0.2): RMS speeds below 2.5 cm halved (10–14 mm/s against 23–27), the top two layers
 // busier (28–37 mm/s), pressure RMS 1.1 %. Near the surface shifting spaces the particles
