@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <numbers>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -39,7 +40,7 @@ struct FickianShifting {
 
     FickianShifting(float coefficientIn, float spacingIn, float supportRadius)
         : coefficient(coefficientIn), spacing(spacingIn),
-          minNeighbors(static_cast<std::uint32_t>(kFullNeighborhood * 4.18879f *
+          minNeighbors(static_cast<std::uint32_t>(kFullNeighborhood * (4.0f / 3.0f) * std::numbers::pi_v<float> *
                                                   std::pow(supportRadius / spacingIn, 3.0f))) {}
 
     [[nodiscard]] bool enabled() const { return coefficient > 0.0f; }
