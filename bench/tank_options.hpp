@@ -20,7 +20,7 @@ struct TankOptions {
     std::string viscosity;  ///< solver.viscosity; empty: the solver's own
     float spacing = 0.02f, supportRatio = WorldDef{}.supportRatio;
     float length = 0.68f, depth = 0.3f;
-    float maxDensityError = SolverDef{}.maxDensityError, xsph = -1.0f, momentum = -1.0f, shifting = 0.0f;
+    float maxDensityError = SolverDef{}.maxDensityError, xsph = -1.0f, momentum = -1.0f, shifting = 0.0f, differenceForm = 0.0f;
     float maxDt = SolverDef{}.maxDt, cfl = SolverDef{}.cflNumber;
     int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows
     int maxIterations = SolverDef{}.maxIterations;
@@ -45,6 +45,10 @@ struct TankOptions {
         app.add_option("--shifting", shifting, "solver.shifting (dfsph: Fickian particle shifting, 0 off)")
             ->capture_default_str()
             ->check(CLI::Range(0.0, 1.0));
+        app.add_option("--difference-form", differenceForm,
+                       "solver.difference_form (dfsph: share of the smoothed pressure's self-term in the difference form, 0 off)")
+            ->capture_default_str()
+            ->check(CLI::Range(0.0, 1.0));
         app.add_option("--max-iterations", maxIterations, "solver.max_iterations")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--max-dt", maxDt, "solver.max_dt, s")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--cfl", cfl, "solver.cfl")->capture_default_str()->check(CLI::PositiveNumber);
@@ -65,6 +69,7 @@ struct TankOptions {
         def.solver.xsph = xsph;
         def.solver.momentum = momentum;
         def.solver.shifting = shifting;
+        def.solver.differenceForm = differenceForm;
         def.solver.maxIterations = maxIterations;
         def.solver.maxDt = maxDt;
         def.solver.cflNumber = cfl;

@@ -1,5 +1,5 @@
 // Scene files' solver keys that the World takes as they are: the kernel and the support
-// that goes with it, the divergence solve's own tolerance, and particle shifting.
+// that goes with it, the divergence solve's own tolerance, particle shifting and the difference form.
 #include <string>
 
 #include <gtest/gtest.h>
@@ -37,6 +37,11 @@ TEST(SceneSolver, DivergenceToleranceDefaultsToTheDensitys) {
 TEST(SceneSolver, ShiftingIsOffUnlessTheSceneSetsIt) {
     EXPECT_EQ(parseWithSolver("{}").world.solver.shifting, 0.0f);
     EXPECT_EQ(parseWithSolver(R"({"shifting": 0.2})").world.solver.shifting, 0.2f);
+}
+
+TEST(SceneSolver, DifferenceFormIsOffUnlessTheSceneSetsIt) {
+    EXPECT_EQ(parseWithSolver("{}").world.solver.differenceForm, 0.0f);
+    EXPECT_EQ(parseWithSolver(R"({"difference_form": 0.5})").world.solver.differenceForm, 0.5f);
 }
 
 }  // namespace

@@ -60,6 +60,7 @@ FlumeRun runFlume(float spacing, float length, float dampingLength, const std::v
     // height (docs/waves.md: −18.9 % instead of −14.1 %).
     solver.momentum = static_cast<float>(envOr("TIDE_WAVE_MOMENTUM", 0.0));
     solver.shifting = static_cast<float>(envOr("TIDE_WAVE_SHIFTING", 0.0));
+    solver.differenceForm = static_cast<float>(envOr("TIDE_WAVE_DIFFERENCE", 0.0));
     if (const char* model = std::getenv("TIDE_WAVE_VISCOSITY")) solver.viscosity = model;
     if (const char* method = std::getenv("TIDE_WAVE_SOLVER")) solver.method = method;
     if (const char* kernel = std::getenv("TIDE_WAVE_KERNEL"); kernel && std::string(kernel) == "wendland_c2")

@@ -44,6 +44,12 @@ TEST(World, RejectsBadDefinitionsNamingTheField) {
                        d.solver.shifting = 0.2f;
                    }),
                    "solver.shifting");
+    expectRejected(with([](WorldDef& d) { d.solver.differenceForm = 1.5f; }), "solver.differenceForm");
+    expectRejected(with([](WorldDef& d) {
+                       d.solver.method = "pcisph";
+                       d.solver.differenceForm = 0.5f;
+                   }),
+                   "solver.differenceForm");
     expectRejected(with([](WorldDef& d) { d.solver.minDivergenceIterations = -2; }), "solver.minDivergenceIterations");
     expectRejected(with([](WorldDef& d) { d.solver.maxDivergenceError = 0.0f; }), "solver.maxDivergenceError");
     expectRejected(with([](WorldDef& d) { d.solver.minDt = 1.0f; }), "solver.minDt");

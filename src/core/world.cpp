@@ -67,6 +67,10 @@ void validateWorldDef(const WorldDef& d) {
     if (s.shifting > 0.0f && s.method != "dfsph")
         throw std::invalid_argument("solver.shifting: only the dfsph solver shifts particles, got " + show(s.shifting) +
                                     " with solver \"" + s.method + "\"");
+    requireInRange("solver.differenceForm", s.differenceForm, 0.0f, 1.0f);
+    if (s.differenceForm > 0.0f && s.method != "dfsph")
+        throw std::invalid_argument("solver.differenceForm: only the dfsph solver takes it, got " + show(s.differenceForm) +
+                                    " with solver \"" + s.method + "\"");
     requireInRange("solver.maxDensityError", s.maxDensityError, 1e-6f, 0.5f);
     if (s.maxDivergenceError >= 0.0f) requireInRange("solver.maxDivergenceError", s.maxDivergenceError, 1e-6f, 0.5f);
     if (s.minDivergenceIterations < -1)

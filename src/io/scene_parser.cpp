@@ -205,7 +205,7 @@ bool readBox(Reader& r, const json& j, const std::string& path, float scale, glm
 void readSolver(Reader& r, const json& j, Scene& scene) {
     const std::string path = "solver";
     if (!r.object(j, path, {"method", "kernel", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "viscosity",
-                            "xsph", "momentum", "shifting", "clamp_negative_pressure", "support_ratio", "max_density_error",
+                            "xsph", "momentum", "shifting", "difference_form", "clamp_negative_pressure", "support_ratio", "max_density_error",
                             "max_divergence_error", "min_iterations", "min_divergence_iterations", "max_iterations"}))
         return;
     SolverDef& s = scene.world.solver;
@@ -252,6 +252,11 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
         s.shifting = static_cast<float>(*v);
         if (s.shifting > 0.0f && s.method != "dfsph")
             r.fail(join(path, "shifting"), "only the dfsph solver shifts particles, got solver \"" + s.method + "\"");
+    }
+    if (auto v = r.number(j, "difference_form", path, false, 0.0, 1.0)) {
+        s.differenceForm = static_cast<float>(*v);
+        if (s.differenceForm > 0.0f && s.method != "dfsph")
+            r.fail(join(path, "difference_form"), "only the dfsph solver takes it, got solver \"" + s.method + "\"");
     }
     if (auto v = r.boolean(j, "clamp_negative_pressure", path)) s.clampNegativePressure = *v;
     if (auto v = r.number(j, "max_density_error", path, false, 0.0, 0.5, true)) s.maxDensityError = static_cast<float>(*v);

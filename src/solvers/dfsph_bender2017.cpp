@@ -381,6 +381,26 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     return iteration;
 }
 
+void DfsphBender2017::smoothKappa(StepContext& ctx) {
+    const ParticleStore& p = ctx.particles;
+    const kernels::SmoothingKernel w = ctx.kernel();
+    const float self = w.value(0.0f);
+    error_.resize(p.size());
+    withPairVector(ctx.periodic, [&](auto delta) {
+        parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+            const glm::vec3 xi = p.position[i];
+            float sum = self * kappa_[i], weights = self;
+            for (const std::uint32_t j : ctx.neighbors.of(i)) {
+                const glm::vec3 d = delta(xi, p.position[j]);
+                const float wij = w.value(std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
+                sum += wij * kappa_[j];
+                weights += wij;
+            }
+            error_[i] = sum / weights;
+        });
+    });
+}
+
 double DfsphBender2017::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
@@ -483,7 +503,15 @@ double DfsphBender2017::step(StepContext& ctx) {
     // ∇C_i = Σ_j V_j ∇W_ij from this step's gradient sums (Σ_j m_j ∇W_ij, or m_i Σ_j ∇W_ij
     // with several rest densities: every particle fills one lattice volume) over ρ_i.
     const FickianShifting shifting(ctx.solver.shifting, ctx.particleSpacing, ctx.supportRadius);
+    const float differenceShare = ctx.solver.differenceForm;
+    if (differenceShare > 0.0f) smoothKappa(ctx);  // into error_, free after the solve
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        if (differenceShare > 0.0f) {
+            // i's own term is −(κ_i/ρ_i)(G_f + ρ0 G_b) in the symmetric form and +(κ_i/ρ_i)(…) in
+            // the difference form: the share of their difference, on κ̄.
+            const glm::vec3 ownGradient = fluidGradient_[i] + ctx.materials[p.material[i]].restDensity * wallGradient_[i];
+            p.velocity[i] += (differenceShare * dtf * 2.0f * error_[i] / p.density[i]) * ownGradient;
+        }
         p.position[i] += dtf * p.velocity[i];
         if (shifting.shifts(ctx.neighbors.of(i).size(), ctx.boundaryNeighbors.of(i).size()))
             p.position[i] += shifting.displacement(fluidGradient_[i] / p.density[i]);
