@@ -115,7 +115,8 @@ TEST(Shifting, PeriodicStandingWaveDecaysSlower) {
 }
 
 // solver.difference_form: the smoothed pressure's self-term in the difference form takes
-// out the packing's stiffness, which made the wave run fast. Measured (the product build):
+// out part of the outward push the symmetric form gives the surface layers, which made the
+// wave run fast (docs/waves.md § The difference form). Measured (the product build):
 // shifting 0.2 alone +3.64 %, decay 0.094 1/s; with the difference form 0.5 +1.41 %, 0.067
 // (0.3: +2.57 %, 0.104; the decay is chaotic to ~0.02 1/s, the frequency much less).
 TEST(DifferenceForm, PeriodicStandingWaveRunsCloserToLinearTheory) {

@@ -20,8 +20,8 @@
 /// of Adami et al. 2012 in the density solve. Moving boundaries (wave paddles) enter the
 /// density rate with (v_i − v_b) and the predicted density at x_b + Δt v_b. With
 /// SolverDef::differenceForm, a share of the smoothed pressure's self-term is taken in the
-/// difference form of incompressible SPH after the solve (see there). Cubic spline kernel, SolverDef::viscosity (Morris 1997),
-/// CFL time step (no sound speed: the solver, not the time step, keeps the fluid incompressible).
+/// difference form of incompressible SPH after the solve (see there). Cubic spline kernel,
+/// SolverDef::viscosity (Morris 1997), CFL time step (no sound speed: the solver, not the time step, keeps the fluid incompressible).
 
 #include <vector>
 
