@@ -117,8 +117,9 @@ TEST(Shifting, PeriodicStandingWaveDecaysSlower) {
 // solver.difference_form: the smoothed pressure's self-term in the difference form takes
 // out part of the outward push the symmetric form gives the surface layers, which made the
 // wave run fast (docs/waves.md § The difference form). Measured (the product build):
-// shifting 0.2 alone +3.64 %, decay 0.094 1/s; with the difference form 0.5 +1.41 %, 0.067
-// (0.3: +2.57 %, 0.104; the decay is chaotic to ~0.02 1/s, the frequency much less).
+// shifting 0.2 alone +3.64 %, decay 0.094 1/s; with the difference form 0.5 +0.45 %, 0.050
+// (+1.41 %, 0.067 with the scalar sums of an earlier build; 0.3: +2.57 %, 0.104; the run is
+// chaotic: the decay to ~0.02 1/s, the frequency to ~1 point).
 TEST(DifferenceForm, PeriodicStandingWaveRunsCloserToLinearTheory) {
     const scenarios::StandingMode shifted = periodicWave(0.2f);
     const scenarios::StandingMode both = periodicWave(0.2f, 0.5f);

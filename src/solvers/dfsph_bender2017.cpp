@@ -383,21 +383,20 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
 
 void DfsphBender2017::smoothKappa(StepContext& ctx) {
     const ParticleStore& p = ctx.particles;
+    const auto n = p.size();
     const kernels::SmoothingKernel w = ctx.kernel();
     const float self = w.value(0.0f);
-    error_.resize(p.size());
-    withPairVector(ctx.periodic, [&](auto delta) {
-        parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
-            const glm::vec3 xi = p.position[i];
-            float sum = self * kappa_[i], weights = self;
-            for (const std::uint32_t j : ctx.neighbors.of(i)) {
-                const glm::vec3 d = delta(xi, p.position[j]);
-                const float wij = w.value(std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z));
-                sum += wij * kappa_[j];
-                weights += wij;
-            }
-            error_[i] = sum / weights;
-        });
+    error_.resize(n);
+    // Weights m_j W_ij (W_ij with several rest densities, as positionMass_ holds): the SIMD
+    // kernel sums over (x_j, m_j κ_j) rows, packed into positionK_ (free after the solve), and
+    // over positionMass_.
+    parallelFor(n, ctx.threads, [&](std::uint32_t j) { positionK_[j] = glm::vec4(p.position[j], positionMass_[j].w * kappa_[j]); });
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        const glm::vec3 xi = p.position[i];
+        const float sum = pair_sums::kernelSum(fluidPairs(ctx, i), positionK_.data(), xi, w, ctx.periodic, positionK_[i].w * self);
+        const float weights = pair_sums::kernelSum(fluidPairs(ctx, i), positionMass_.data(), xi, w, ctx.periodic,
+                                                   positionMass_[i].w * self);
+        error_[i] = sum / weights;
     });
 }
 

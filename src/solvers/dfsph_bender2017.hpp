@@ -21,7 +21,8 @@
 /// density rate with (v_i − v_b) and the predicted density at x_b + Δt v_b. With
 /// SolverDef::differenceForm, a share of the smoothed pressure's self-term is taken in the
 /// difference form of incompressible SPH after the solve (see there). Cubic spline kernel,
-/// SolverDef::viscosity (Morris 1997), CFL time step (no sound speed: the solver, not the time step, keeps the fluid incompressible).
+/// SolverDef::viscosity (Morris 1997), CFL time step (no sound speed: the solver, not the
+/// time step, keeps the fluid incompressible).
 
 #include <vector>
 
@@ -85,8 +86,8 @@ private:
     /// v_i −= Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij + Σ_b Ψ_b ((k_i + k_b)/ρ_i) ∇W_ib for the
     /// current k_; boundary particles take `boundaryK`, or mirror k_i when it is empty.
     void applyPressure(StepContext& ctx, std::span<const float> boundaryK);
-    /// κ̄_i = Σ_j W_ij κ_j / Σ_j W_ij over i and its fluid neighbours (SolverDef::differenceForm),
-    /// into error_.
+    /// κ̄_i = Σ_j m_j W_ij κ_j / Σ_j m_j W_ij over i and its fluid neighbours
+    /// (SolverDef::differenceForm), into error_.
     void smoothKappa(StepContext& ctx);
 
     std::vector<float> alpha_;
