@@ -1,10 +1,12 @@
 // Acceptance of the numerical wave tank (issue 6): regular waves from a piston paddle in a
 // flume with a damping zone, against linear wave theory, and waves breaking on a beach.
 //
-// These runs simulate ~9 s of a 12k-particle flume at the 5 ms steps dfsph needs: 10-20
-// minutes on this project's 2-core machine, far over the suite's budget, so they run only
-// with TIDE_LONG_TESTS=1 (otherwise they are skipped and say so). The short checks of the
-// same machinery (paddle, gauges, probes, damping, mass) are in test_wave_gauges.cpp.
+// Both run in the suite: the flume (2 cm, 11,700 particles, 9 s) takes ~45 s of one core,
+// the beach (1.5 cm, 8 s) ~70 s (they were opt-in when they took 10-20 min, and while they
+// were, both drifted into failing unseen: docs/waves.md § The acceptance in the suite). The
+// short checks of the same machinery (paddle, gauges, probes, damping, mass) are in
+// test_wave_gauges.cpp. The TIDE_WAVE_* and TIDE_BEACH_* variables change a run's settings
+// for measurements (docs/waves.md gives the commands).
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -59,8 +61,11 @@ FlumeRun runFlume(float spacing, float length, float dampingLength, const std::v
     // No momentum in the density solve: it halves the iterations but the waves lose more
     // height (docs/waves.md: −18.9 % instead of −14.1 %).
     solver.momentum = static_cast<float>(envOr("TIDE_WAVE_MOMENTUM", 0.0));
-    solver.shifting = static_cast<float>(envOr("TIDE_WAVE_SHIFTING", 0.0));
-    solver.differenceForm = static_cast<float>(envOr("TIDE_WAVE_DIFFERENCE", 0.0));
+    // Particle shifting with the difference form of the pressure's own term, as the wave
+    // benchmark: without them these waves lose 13-16 % of their height by the gauges and
+    // the figure is a draw either side of the 15 % asked; with them 3-6 % (docs/waves.md).
+    solver.shifting = static_cast<float>(envOr("TIDE_WAVE_SHIFTING", 0.2));
+    solver.differenceForm = static_cast<float>(envOr("TIDE_WAVE_DIFFERENCE", 0.5));
     if (const char* model = std::getenv("TIDE_WAVE_VISCOSITY")) solver.viscosity = model;
     if (const char* method = std::getenv("TIDE_WAVE_SOLVER")) solver.method = method;
     if (const char* kernel = std::getenv("TIDE_WAVE_KERNEL"); kernel && std::string(kernel) == "wendland_c2")
@@ -107,10 +112,7 @@ FlumeRun runFlume(float spacing, float length, float dampingLength, const std::v
     return run;
 }
 
-bool longTestsEnabled() { return std::getenv("TIDE_LONG_TESTS") != nullptr; }
-
 TEST(WaveTank, RegularPistonWavesMatchLinearTheory) {
-    if (!longTestsEnabled()) GTEST_SKIP() << "a 10-20 min run: set TIDE_LONG_TESTS=1";
     const double T = 1.0, d = 0.3, H = 0.04, g = 9.81;
     const double omega = 2.0 * std::numbers::pi / T;
     const double k = waves::waveNumber(omega, d, g), lambda = 2.0 * std::numbers::pi / k;
@@ -179,8 +181,10 @@ TEST(WaveTank, RegularPistonWavesMatchLinearTheory) {
 /// at x = 1.5 m (still-water line at 4.5 m): the highest crest at each gauge over the last
 /// periods rises while the waves shoal, then falls after they break.
 TEST(WaveTank, WavesShoalAndBreakOnABeach) {
-    if (!longTestsEnabled()) GTEST_SKIP() << "a 10-20 min run: set TIDE_LONG_TESTS=1";
-    const float spacing = 0.02f, depth = 0.3f, length = 5.0f;
+    // 1.5 cm: at 2 cm the crest's rise over the slope is within the run's scatter (+3-5 % in
+    // today's draws against the 10 % asked, +13-44 % in earlier ones: docs/waves.md § Beach).
+    const float spacing = static_cast<float>(envOr("TIDE_BEACH_SPACING", 0.015)), depth = 0.3f,
+                length = static_cast<float>(envOr("TIDE_BEACH_LENGTH", 5.0));
     WorldDef def;
     def.domainMax = {length, 2.0f * depth, 4.0f * spacing};
     def.periodic = {false, false, true};
@@ -188,6 +192,10 @@ TEST(WaveTank, WavesShoalAndBreakOnABeach) {
     def.solver.maxDensityError = 0.003f;
     def.solver.xsph = 0.0f;  // as in the flume: XSPH smoothing damps the waves before they reach the beach
     def.solver.momentum = 0.0f;  // as in the flume
+    // No shifting, as scenes/beach.json (with shifting 0.2 and the difference form 0.5 the
+    // crest rose 23 % but fell only to 0.82 of it past the break, against 0.8 asked).
+    def.solver.shifting = static_cast<float>(envOr("TIDE_WAVE_SHIFTING", 0.0));
+    def.solver.differenceForm = static_cast<float>(envOr("TIDE_WAVE_DIFFERENCE", 0.0));
     def.threads = static_cast<int>(envOr("TIDE_WAVE_THREADS", 0));
     World world(def);
     world.addMaterial(MaterialDef{});
