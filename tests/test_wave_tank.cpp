@@ -183,8 +183,7 @@ TEST(WaveTank, RegularPistonWavesMatchLinearTheory) {
 TEST(WaveTank, WavesShoalAndBreakOnABeach) {
     // 1.5 cm: at 2 cm the crest's rise over the slope is within the run's scatter (+3-5 % in
     // today's draws against the 10 % asked, +13-44 % in earlier ones: docs/waves.md § Beach).
-    const float spacing = static_cast<float>(envOr("TIDE_BEACH_SPACING", 0.015)), depth = 0.3f,
-                length = static_cast<float>(envOr("TIDE_BEACH_LENGTH", 5.0));
+    const float spacing = static_cast<float>(envOr("TIDE_BEACH_SPACING", 0.015)), depth = 0.3f, length = 5.0f;
     WorldDef def;
     def.domainMax = {length, 2.0f * depth, 4.0f * spacing};
     def.periodic = {false, false, true};
