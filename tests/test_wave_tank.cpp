@@ -198,11 +198,6 @@ TEST(WaveTank, WavesShoalAndBreakOnABeach) {
     def.threads = static_cast<int>(envOr("TIDE_WAVE_THREADS", 0));
     World world(def);
     world.addMaterial(MaterialDef{});
-    ObstacleDef beach;
-    beach.shape = ObstacleDef::Shape::Plane;
-    beach.point = {1.5f, 0.0f, 0.0f};
-    beach.normal = {-0.1f, 1.0f, 0.0f};
-    world.addObstacle(beach);
     WaveMakerDef paddle;
     paddle.x = 0.1f;
     paddle.depth = depth;
@@ -210,6 +205,11 @@ TEST(WaveTank, WavesShoalAndBreakOnABeach) {
     paddle.period = 1.2f;
     paddle.rampTime = 1.5f;
     world.addWaveMaker(paddle);
+    ObstacleDef beach;
+    beach.shape = ObstacleDef::Shape::Plane;
+    beach.point = {1.5f, 0.0f, 0.0f};
+    beach.normal = {-0.1f, 1.0f, 0.0f};
+    world.addObstacle(beach);
     world.addBlock({{paddle.x, 0.0f, 0.0f}, {length, depth, def.domainMax.z}, {}, 0});
     const auto n = world.particles().size();
     const double mass = world.totalMass();

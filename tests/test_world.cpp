@@ -60,7 +60,7 @@ TEST(World, RejectsBadDefinitionsNamingTheField) {
     expectRejected([&] { world.addBlock({{0, 0, 0}, {0.1f, 0.1f, 0.1f}, {0, 0, 0}, 7}); }, "material");
 }
 
-TEST(World, BlockFillsALatticeCentredInTheBox) {
+TEST(World, BlockFillsTheLatticeFromTheCorner) {
     WorldDef def;
     def.particleSpacing = 0.1f;
     World world(def);
@@ -72,6 +72,67 @@ TEST(World, BlockFillsALatticeCentredInTheBox) {
     EXPECT_FLOAT_EQ(p.velocity[0].x, 1.0f);
     // A lattice particle's mass makes a filled block exactly rest density.
     EXPECT_NEAR(world.particleMass(0), 1000.0f * 0.1f * 0.1f * 0.1f, 0.03f * 1.0f);
+}
+
+/// Smallest distance between a particle of [0, split) and one of [split, size).
+float closestAcross(const ParticleStore& p, std::uint32_t split) {
+    float closest = 1e30f;
+    for (std::uint32_t i = 0; i < split; ++i)
+        for (std::uint32_t j = split; j < p.size(); ++j) closest = std::min(closest, glm::distance(p.position[i], p.position[j]));
+    return closest;
+}
+
+// Blocks hold the points of the domain's lattice whose cells lie inside their boxes: the
+// lattice the walls and obstacles are sampled on, so water put against them continues it.
+TEST(World, BlocksFillTheDomainsLatticeInsideTheirBoxes) {
+    WorldDef def;
+    def.particleSpacing = 0.1f;
+    World world(def);
+    world.addMaterial({});
+    // Off the lattice: x cells [0.2, 0.3] and [0.3, 0.4] fit in [0.13, 0.47] (a lattice
+    // centred in the box would hold 0.2, 0.3, 0.4, off the walls' lattice by 0.05).
+    const BlockDef off{{0.13f, 0.0f, 0.0f}, {0.47f, 0.2f, 0.1f}, {}, 0};
+    EXPECT_EQ(world.countBlock(off), 2u * 2u * 1u);
+    ASSERT_EQ(world.addBlock(off), AddStatus::Added);
+    const ParticleStore& p = world.particles();
+    ASSERT_EQ(p.size(), 4u);
+    EXPECT_FLOAT_EQ(p.position[0].x, 0.25f);
+    EXPECT_FLOAT_EQ(p.position[1].x, 0.35f);
+    EXPECT_FLOAT_EQ(p.position[0].y, 0.05f);
+    // A block against it keeps a spacing away, even where their boxes share a face off the lattice.
+    ASSERT_EQ(world.addBlock({{0.47f, 0.0f, 0.0f}, {0.8f, 0.2f, 0.1f}, {}, 0}), AddStatus::Added);
+    ASSERT_EQ(p.size(), 4u + 3u * 2u);
+    EXPECT_GE(closestAcross(p, 4), 0.1f - 1e-6f);
+
+    // Issue 8's benchmark block keeps SPlisHSPlasH's 37³ particles, half a spacing off the walls.
+    WorldDef tank;
+    tank.domainMax = {4.0f, 3.0f, 1.5f};
+    tank.particleSpacing = 0.0264f;
+    World bench(tank);
+    bench.addMaterial({});
+    ASSERT_EQ(bench.addBlock({{0, 0, 0}, {1, 1, 1}, {}, 0}), AddStatus::Added);
+    EXPECT_EQ(bench.particles().size(), 37u * 37u * 37u);
+    EXPECT_FLOAT_EQ(bench.particles().position[0].x, 0.0132f);
+}
+
+// In front of a wave maker the lattice starts at its face, where its particles end.
+TEST(World, BlocksInFrontOfAWaveMakerStartAtItsFace) {
+    WorldDef def;
+    def.domainMax = {1.0f, 0.4f, 0.1f};
+    def.particleSpacing = 0.02f;
+    World world(def);
+    world.addMaterial({});
+    WaveMakerDef paddle;
+    paddle.x = 0.13f;
+    paddle.depth = 0.2f;
+    paddle.waveHeight = 0.02f;
+    paddle.period = 1.0f;
+    world.addWaveMaker(paddle);
+    ASSERT_EQ(world.addBlock({{paddle.x, 0.0f, 0.0f}, {1.0f, 0.2f, 0.1f}, {}, 0}), AddStatus::Added);
+    float front = 1e30f;
+    for (const glm::vec3& x : world.particles().position) front = std::min(front, x.x);
+    EXPECT_NEAR(front, paddle.x + 0.5f * def.particleSpacing, 1e-6f);
+    EXPECT_EQ(world.particles().size(), 43u * 10u * 5u);  // cells [0.13 + 0.02 k, ...] up to 1.0
 }
 
 TEST(World, OutsideAndOverCapacityAddNothing) {

@@ -188,8 +188,10 @@ public:
     /// which diffusion conserves.
     [[nodiscard]] double meanConcentration() const;
 
-    /// Fill a box with particles on a lattice of the world's spacing, centred in the box,
-    /// leaving out points inside obstacles. Adds all of them or none (see AddStatus).
+    /// Fill a box with particles: the points of the domain's lattice (domainMin + (k + ½)·spacing,
+    /// where walls and obstacles are sampled) whose cells lie inside the box, leaving out
+    /// points inside obstacles or closer than a spacing to a boundary particle. Adds all of
+    /// them or none (see AddStatus).
     AddStatus addBlock(const BlockDef& block);
     /// Whether a box lies inside the container (without walls: inside the periodic axes' extent).
     [[nodiscard]] bool insideDomain(const glm::vec3& min, const glm::vec3& max) const;
@@ -208,9 +210,10 @@ public:
     /// Particles outside the container or inside an obstacle (moving ones where they are now): should always be 0.
     [[nodiscard]] std::uint32_t countEscapedParticles() const;
 
-    /// Add a wave paddle (a moving boundary, see WaveMakerDef). Add it before blocks: blocks
-    /// leave out the lattice points behind its face. Throws std::invalid_argument naming the
-    /// field at fault.
+    /// Add a wave paddle (a moving boundary, see WaveMakerDef). Add it before obstacles and
+    /// blocks: blocks leave out the lattice points behind its face, and the first paddle's
+    /// face puts the cell corners of the lattice they are sampled on in x (so that the water
+    /// continues the paddle's particles). Throws std::invalid_argument naming the field at fault.
     void addWaveMaker(const WaveMakerDef& waveMaker);
     [[nodiscard]] std::uint32_t waveMakerCount() const;
     /// Horizontal displacement of wave maker `index`'s face at the still-water level at time t, m.

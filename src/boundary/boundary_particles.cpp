@@ -59,25 +59,12 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
 
 std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float particleVolume, float minSeparation,
                                      float searchRadius, int threads) {
-    // The grid's cells are at least searchRadius > minSeparation wide, so any particle
-    // within minSeparation of a point lies in the 3×3×3 cells around it. Moving particles
-    // are elsewhere soon: fixed points are checked against fixed particles only.
+    // Moving particles are elsewhere soon: fixed points are checked against fixed particles only.
     std::vector<std::uint8_t> keep(points.size(), 1);
     movable.resize(position.size(), 0);  // positions set by hand are fixed
-    if (!position.empty()) {
-        const auto sorted = grid.sortedParticles();
-        const float limit2 = minSeparation * minSeparation;
-        parallelFor(static_cast<std::uint32_t>(points.size()), threads, [&](std::uint32_t i) {
-            const glm::vec3 x = points[i];
-            grid.forEachNeighborRun(grid.cellOf(x), [&](std::uint32_t begin, std::uint32_t end) {
-                for (std::uint32_t k = begin; k < end && keep[i]; ++k) {
-                    if (movable[sorted[k]]) continue;
-                    const glm::vec3 d = periodic.delta(position[sorted[k]], x);
-                    if (glm::dot(d, d) < limit2) keep[i] = 0;
-                }
-            });
-        });
-    }
+    if (!position.empty())
+        parallelFor(static_cast<std::uint32_t>(points.size()), threads,
+                    [&](std::uint32_t i) { keep[i] = !anyCloserThan(points[i], minSeparation, true); });
     const std::size_t before = position.size();
     for (std::size_t i = 0; i < points.size(); ++i)
         if (keep[i]) position.push_back(points[i]);
@@ -89,6 +76,23 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
     movable.resize(position.size(), 0);
     grid.build(position, searchRadius, threads, periodic);
     return static_cast<std::uint32_t>(position.size() - before);
+}
+
+bool BoundaryParticles::anyCloserThan(const glm::vec3& x, float radius, bool fixedOnly) const {
+    if (position.empty()) return false;
+    // The grid's cells are at least its search radius wide, so any particle within `radius`
+    // of x lies in the 3×3×3 cells around it.
+    const auto sorted = grid.sortedParticles();
+    const float limit2 = radius * radius;
+    bool found = false;
+    grid.forEachNeighborRun(grid.cellOf(x), [&](std::uint32_t begin, std::uint32_t end) {
+        for (std::uint32_t k = begin; k < end && !found; ++k) {
+            if (fixedOnly && movable[sorted[k]]) continue;
+            const glm::vec3 d = periodic.delta(position[sorted[k]], x);
+            found = glm::dot(d, d) < limit2;
+        }
+    });
+    return found;
 }
 
 std::uint32_t BoundaryParticles::addMoving(std::span<const glm::vec3> points, float particleVolume) {

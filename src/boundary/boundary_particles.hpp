@@ -47,6 +47,10 @@ public:
     /// the World's to set every step. Returns the index of the first one.
     std::uint32_t addMoving(std::span<const glm::vec3> points, float volume);
 
+    /// Whether a boundary particle lies closer than `radius` (at most the grid's cell size)
+    /// to x; with `fixedOnly`, a fixed one. Reads the grid as last built.
+    [[nodiscard]] bool anyCloserThan(const glm::vec3& x, float radius, bool fixedOnly = false) const;
+
     [[nodiscard]] std::uint32_t size() const { return static_cast<std::uint32_t>(position.size()); }
 
     std::vector<glm::vec3> position;  ///< m

@@ -138,6 +138,7 @@ std::vector<glm::vec3> sampleObstacle(const ObstacleDef& o, const glm::vec3& ori
     const glm::ivec3 first(glm::floor((lo - origin) / spacing));
     const glm::ivec3 last(glm::ceil((hi - origin) / spacing));
     const glm::ivec3 count = glm::max(last - first + 1, glm::ivec3(0));
+    const float onSurface = kOnSurface * spacing;
     // One list per lattice row (y, z), joined in row order: the same points in the same
     // order for any thread count.
     std::vector<std::vector<glm::vec3>> rows(static_cast<std::size_t>(count.y) * static_cast<std::size_t>(count.z));
@@ -155,7 +156,7 @@ std::vector<glm::vec3> sampleObstacle(const ObstacleDef& o, const glm::vec3& ori
             } else {
                 d = signedDistance(o, x);
             }
-            if (d <= 0.0f && d > -depth) rows[row].push_back(x);
+            if (d <= onSurface && d > -depth) rows[row].push_back(x);
         }
     });
     std::vector<glm::vec3> points;

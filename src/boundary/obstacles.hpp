@@ -34,8 +34,14 @@ float signedDistance(const ObstacleDef& obstacle, const RigidPose& pose, const g
 void obstacleBounds(const ObstacleDef& obstacle, const glm::vec3& clipMin, const glm::vec3& clipMax, glm::vec3& lo,
                     glm::vec3& hi);
 
-/// Lattice points origin + (k + ½)·spacing inside the obstacle and no deeper than `depth`,
-/// within the box [clipMin, clipMax], in a fixed order for any thread count.
+/// How far outside a surface a lattice point may lie and still be the solid's, in spacings.
+/// Surfaces through lattice points are common (round numbers); a point on one must be the
+/// solid's or the fluid's by one rule, not by the rounding of each place that asks.
+inline constexpr float kOnSurface = 1e-3f;
+
+/// Lattice points origin + (k + ½)·spacing inside the obstacle (or on its surface, within
+/// kOnSurface) and no deeper than `depth`, within the box [clipMin, clipMax], in a fixed
+/// order for any thread count.
 std::vector<glm::vec3> sampleObstacle(const ObstacleDef& obstacle, const glm::vec3& origin, float spacing, float depth,
                                       const glm::vec3& clipMin, const glm::vec3& clipMax, int threads = 1);
 

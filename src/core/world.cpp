@@ -158,6 +158,9 @@ struct World::Impl {
         std::vector<glm::vec3> rest;
     };
     std::vector<Paddle> paddles;
+    /// Where the lattice of blocks and obstacles has a cell corner: the domain's corner, but
+    /// in x the first wave maker's face (its particles continue the fluid's lattice from there).
+    glm::vec3 latticeOrigin;
     std::vector<DampingZoneDef> dampingZones;
     double time = 0.0;
     float soundSpeed = 0.0f;  ///< resolved at the first step when SolverDef::soundSpeed is 0
@@ -171,7 +174,7 @@ struct World::Impl {
           latticeSum(latticeKernelSum(solver->densityKernel(), d.solver.kernel, d.particleSpacing, h)),
           periodic(PeriodicBox::make(d.domainMin, d.domainMax, d.periodic)),
           viscosity(viscosityModel(d.solver.viscosity, solver->defaultViscosity())),
-          soundSpeed(d.solver.soundSpeed) {
+          latticeOrigin(d.domainMin), soundSpeed(d.solver.soundSpeed) {
         boundary.periodic = periodic;
         if (def.walls) {
             const int layers = static_cast<int>(std::ceil(h / def.particleSpacing));
@@ -194,15 +197,31 @@ struct World::Impl {
         return true;
     }
 
-    /// Whether a lattice point is clear of every obstacle (by the half spacing a particle fills).
-    [[nodiscard]] bool clearOfObstacles(const glm::vec3& x) const {
+    /// What a lattice of new particles fills: a block (on the lattice of the solids' particles)
+    /// or an emitter's layer (on its own, moving off at once).
+    enum class Fill { Block, EmitterLayer };
+
+    /// Whether a lattice point has room for a new particle. Every point keeps the half spacing
+    /// a particle fills off the surfaces of moving solids: their outermost particles sweep
+    /// along the surface once they move. A block's point may come nearer a fixed solid, to
+    /// the solver's fill clearance, where the solid's particles fill the lattice up to its
+    /// surface; but no nearer than kFillSeparation spacings to any boundary particle. On one
+    /// lattice with the solids' particles that holds by itself, and it keeps points out where
+    /// the lattices differ, which would start pressed against the solid's particles. An
+    /// emitter's layer (on its own lattice, moving off at once) keeps the half spacing off
+    /// every surface.
+    [[nodiscard]] bool roomFor(const glm::vec3& x, Fill fill) const {
+        constexpr float kFillSeparation = 0.9f;
+        const float half = 0.499f * def.particleSpacing;
+        const float clearance =
+            fill == Fill::Block ? std::max(solver->fillClearance(), kOnSurface) * def.particleSpacing : half;
         for (const ObstacleDef& o : fixedObstacles)
-            if (signedDistance(o, x) < 0.499f * def.particleSpacing) return false;
+            if (!(signedDistance(o, x) > clearance)) return false;
         for (const Mover& m : movers)
-            if (signedDistance(obstacles[m.index], m.motion.pose(time), x) < 0.499f * def.particleSpacing) return false;
+            if (!(signedDistance(obstacles[m.index], m.motion.pose(time), x) > half)) return false;
         for (const Paddle& paddle : paddles)
-            if (paddle.maker.distanceInFront(time, x) < 0.499f * def.particleSpacing) return false;
-        return true;
+            if (!(paddle.maker.distanceInFront(time, x) > half)) return false;
+        return fill == Fill::EmitterLayer || !boundary.anyCloserThan(x, kFillSeparation * def.particleSpacing);
     }
 
     /// Whether a step advances the clock (World::step) or holds it (World::settle).
@@ -250,21 +269,30 @@ struct World::Impl {
         boundary.grid.build(boundary.position, h, threads, periodic);
     }
 
-    [[nodiscard]] std::uint64_t countLattice(const Lattice& lattice) const {
+    /// The points a block [min, max] holds: on the domain's lattice, where the walls and
+    /// obstacles are sampled.
+    [[nodiscard]] Lattice blockLattice(const glm::vec3& min, const glm::vec3& max) const {
+        return Lattice::onDomainLattice(min, max, def.particleSpacing, latticeOrigin);
+    }
+
+    /// How many of the lattice's points have room for a particle (roomFor). Against walls
+    /// alone every one has.
+    [[nodiscard]] std::uint64_t countLattice(const Lattice& lattice, Fill fill) const {
         if (obstacles.empty() && paddles.empty()) return lattice.size();
         std::uint64_t n = 0;
-        lattice.forEach([&](const glm::vec3& x) { n += clearOfObstacles(x); });
+        lattice.forEach([&](const glm::vec3& x) { n += roomFor(x, fill); });
         return n;
     }
 
-    /// Appends the lattice's `count` points clear of obstacles (countLattice).
-    void appendLattice(const Lattice& lattice, std::uint64_t count, const glm::vec3& velocity, MaterialIndex material,
-                       float concentration = 0.0f) {
+    /// Appends the lattice's `count` points that have room for a particle (countLattice).
+    void appendLattice(const Lattice& lattice, Fill fill, std::uint64_t count, const glm::vec3& velocity,
+                       MaterialIndex material, float concentration = 0.0f) {
         const float m = massOf(material);
         const float rho0 = materials[material].restDensity;
+        const bool everyPoint = obstacles.empty() && paddles.empty();
         particles.makeRoomFor(static_cast<std::uint32_t>(count));
         lattice.forEach([&](const glm::vec3& x) {
-            if (clearOfObstacles(x)) particles.append(x, velocity, m, material, rho0, concentration);
+            if (everyPoint || roomFor(x, fill)) particles.append(x, velocity, m, material, rho0, concentration);
         });
     }
 
@@ -318,9 +346,9 @@ struct World::Impl {
     void emit(double t0, double dt) {
         for (EmitterState& emitter : emitters) {
             const double dropped = emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
-                const std::uint64_t count = countLattice(layer);
+                const std::uint64_t count = countLattice(layer, Fill::EmitterLayer);
                 if (particles.size() + count > def.capacity) return false;
-                appendLattice(layer, count, emitter.def.velocity, emitter.def.material, emitter.def.concentration);
+                appendLattice(layer, Fill::EmitterLayer, count, emitter.def.velocity, emitter.def.material, emitter.def.concentration);
                 return true;
             });
             stats.emitterCapacityHits += dropped < 1.8e19 ? static_cast<std::uint64_t>(dropped) : ~std::uint64_t{0};
@@ -473,21 +501,21 @@ bool World::insideDomain(const glm::vec3& min, const glm::vec3& max) const {
 }
 
 std::uint32_t World::countBlock(const BlockDef& block) const {
-    const Lattice lattice(block.min, block.max, impl_->def.particleSpacing);
-    return static_cast<std::uint32_t>(std::min<std::uint64_t>(impl_->countLattice(lattice), 0xffffffffu));
+    const Lattice lattice = impl_->blockLattice(block.min, block.max);
+    return static_cast<std::uint32_t>(std::min<std::uint64_t>(impl_->countLattice(lattice, Impl::Fill::Block), 0xffffffffu));
 }
 
 AddStatus World::addBlock(const BlockDef& block) {
     validateBox("block", block.min, block.max);
     if (block.material >= impl_->materials.size())
         throw std::invalid_argument("block.material: no material " + std::to_string(block.material));
-    const Lattice lattice(block.min, block.max, impl_->def.particleSpacing);
+    const Lattice lattice = impl_->blockLattice(block.min, block.max);
     if (!impl_->insideDomain(lattice)) return AddStatus::OutsideDomain;
     if (!(block.concentration >= 0.0f) || !std::isfinite(block.concentration))
         throw std::invalid_argument("block.concentration: must be finite and >= 0, got " + show(block.concentration));
-    const std::uint64_t count = impl_->countLattice(lattice);
+    const std::uint64_t count = impl_->countLattice(lattice, Impl::Fill::Block);
     if (impl_->particles.size() + count > impl_->def.capacity) return AddStatus::OverCapacity;
-    impl_->appendLattice(lattice, count, block.velocity, block.material, block.concentration);
+    impl_->appendLattice(lattice, Impl::Fill::Block, count, block.velocity, block.material, block.concentration);
     return AddStatus::Added;
 }
 
@@ -535,7 +563,7 @@ void World::addObstacle(const ObstacleDef& def) {
             clipMin[axis] = w.def.domainMin[axis];
             clipMax[axis] = w.def.domainMax[axis];
         }
-    auto points = sampleObstacle(obstacle, w.def.domainMin, w.def.particleSpacing, w.h, clipMin, clipMax, w.threads);
+    auto points = sampleObstacle(obstacle, w.latticeOrigin, w.def.particleSpacing, w.h, clipMin, clipMax, w.threads);
     for (glm::vec3& x : points) x = w.periodic.wrap(x);
     const auto index = static_cast<std::uint32_t>(w.obstacles.size());
     w.obstacles.push_back(obstacle);
@@ -615,6 +643,7 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     const int layers = static_cast<int>(std::ceil(w.h / d.particleSpacing));
     std::vector<glm::vec3> rest = maker.sample(d.domainMin, d.domainMax, d.particleSpacing, layers);
     const std::uint32_t begin = w.boundary.addMoving(rest, 1.0f / w.latticeSum);
+    if (w.paddles.empty()) w.latticeOrigin.x = def.x;
     w.paddles.push_back({std::move(maker), begin, std::move(rest)});
     w.moveBoundaries(w.time);
 }

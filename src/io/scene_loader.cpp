@@ -61,7 +61,7 @@ SceneEstimate estimate(const Scene& scene) {
     e.emittedParticles.assign(scene.materials.size(), 0);
     const float s = scene.world.particleSpacing;
     for (const BlockDef& b : scene.blocks)
-        e.initialParticles[b.material] = saturatingAdd(e.initialParticles[b.material], Lattice(b.min, b.max, s).size());
+        e.initialParticles[b.material] = saturatingAdd(e.initialParticles[b.material], Lattice::onDomainLattice(b.min, b.max, s, scene.world.domainMin).size());
     for (const EmitterDef& em : scene.emitters) {
         const double active = std::min(em.end, scene.endTime) - em.start;
         if (active <= 0.0) continue;
@@ -85,8 +85,9 @@ World buildWorld(const Scene& scene) {
     World world(scene.world);
     for (const MaterialDef& m : scene.materials) world.addMaterial(m);
     for (const MaterialPairDef& pair : scene.materialPairs) world.setMaterialPair(pair);
-    for (const ObstacleDef& o : scene.obstacles) world.addObstacle(o);
+    // The wave maker first: obstacles and blocks are sampled on a lattice that starts at its face.
     for (const WaveMakerDef& w : scene.waveMakers) world.addWaveMaker(w);
+    for (const ObstacleDef& o : scene.obstacles) world.addObstacle(o);
     for (const DampingZoneDef& d : scene.dampingZones) world.addDampingZone(d);
     for (std::size_t i = 0; i < scene.blocks.size(); ++i)
         if (world.addBlock(scene.blocks[i]) != AddStatus::Added)

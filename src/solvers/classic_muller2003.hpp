@@ -32,6 +32,8 @@ public:
     /// Müller's mirrored boundary pressure (V_b p_i) is too soft to hold particles at the
     /// lattice position half a spacing from a wall; the projection does it.
     [[nodiscard]] float wallMargin() const override { return 0.5f; }
+    /// Points nearer the surface than the margin would be pushed out onto their neighbours.
+    [[nodiscard]] float fillClearance() const override { return 0.499f; }
     [[nodiscard]] bool usesWallPressure() const override { return false; }
     [[nodiscard]] ViscosityModel defaultViscosity() const override { return ViscosityModel::Muller2003; }
     double step(StepContext& ctx) override;

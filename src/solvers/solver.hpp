@@ -83,6 +83,11 @@ public:
     /// Closest a particle centre may come to a wall or obstacle, in particle spacings: where
     /// the projection after each step puts strays back.
     [[nodiscard]] virtual float wallMargin() const { return 0.1f; }
+    /// How far outside a solid's surface a block's point must lie to be filled, in particle
+    /// spacings. The solid's boundary particles fill its lattice points up to the surface, so
+    /// any point outside continues the lattice at rest density; the few within wallMargin()
+    /// are moved out to it by the first step.
+    [[nodiscard]] virtual float fillClearance() const { return 0.0f; }
     /// The viscosity model when SolverDef::viscosity names none.
     [[nodiscard]] virtual ViscosityModel defaultViscosity() const { return ViscosityModel::Morris1997; }
     /// Whether step() reads StepContext::boundaryFluidNeighbors (built only then).

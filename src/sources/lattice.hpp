@@ -28,6 +28,30 @@ struct Lattice {
             first[axis] = min[axis] + 0.5f * (extent - static_cast<float>(count[axis] - 1) * spacing);
         }
     }
+    /// The points of the domain's lattice origin + (k + ½)·spacing whose cells (the cube of
+    /// one spacing around each) lie inside [min, max]: a block of water. Walls and obstacles
+    /// are sampled on that lattice, so a block put against them continues it, at rest
+    /// density; on its own centred lattice it could sit up to half a spacing off theirs,
+    /// pressed against their particles or hanging a gap above them (it then falls into it).
+    /// Adjacent blocks keep a spacing apart. An axis with no whole cell inside keeps the
+    /// centred lattice's point at the middle; so does an axis where the centred lattice
+    /// already is the domain's, to the last bit.
+    static Lattice onDomainLattice(const glm::vec3& min, const glm::vec3& max, float spacing, const glm::vec3& origin) {
+        Lattice lattice(min, max, spacing);
+        for (int axis = 0; axis < 3; ++axis) {
+            // In double: the indices of far-off blocks at fine spacings exceed float's 24 bits.
+            const double s = spacing, slack = 1e-3;
+            const double lo = std::ceil((double{min[axis]} - origin[axis]) / s - slack);
+            const double hi = std::floor((double{max[axis]} - origin[axis]) / s + slack) - 1.0;
+            if (!(hi >= lo) || hi - lo >= 4.0e9) continue;
+            const auto n = static_cast<std::uint32_t>(hi - lo + 1.0);
+            const auto first = static_cast<float>(origin[axis] + (lo + 0.5) * s);
+            if (n == lattice.count[axis] && std::abs(first - lattice.first[axis]) <= 1e-3f * spacing) continue;
+            lattice.count[axis] = n;
+            lattice.first[axis] = first;
+        }
+        return lattice;
+    }
     /// Number of points, saturating at 2^64 − 1.
     [[nodiscard]] std::uint64_t size() const {
         const std::uint64_t xy = std::uint64_t{count.x} * count.y;  // < 2^64: each count < 2^32
