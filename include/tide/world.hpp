@@ -188,10 +188,11 @@ public:
     /// which diffusion conserves.
     [[nodiscard]] double meanConcentration() const;
 
-    /// Fill a box with particles: the points of the domain's lattice (domainMin + (k + ½)·spacing,
-    /// where walls and obstacles are sampled) whose cells lie inside the box, leaving out
-    /// points inside obstacles or closer than a spacing to a boundary particle. Adds all of
-    /// them or none (see AddStatus).
+    /// Fill a box with particles: the points of the lattice the walls and obstacles are sampled
+    /// on (cell corners at domainMin, in x at the first wave maker's face) whose cells lie
+    /// inside the box. Leaves out points inside fixed obstacles, within half a spacing of a
+    /// moving obstacle or a wave maker, and closer than 0.9 spacing to any boundary particle.
+    /// Adds all of them or none (see AddStatus).
     AddStatus addBlock(const BlockDef& block);
     /// Whether a box lies inside the container (without walls: inside the periodic axes' extent).
     [[nodiscard]] bool insideDomain(const glm::vec3& min, const glm::vec3& max) const;

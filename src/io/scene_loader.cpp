@@ -60,8 +60,11 @@ SceneEstimate estimate(const Scene& scene) {
     e.initialParticles.assign(scene.materials.size(), 0);
     e.emittedParticles.assign(scene.materials.size(), 0);
     const float s = scene.world.particleSpacing;
+    glm::vec3 latticeOrigin = scene.world.domainMin;  // as World::addBlock fills (buildWorld)
+    if (!scene.waveMakers.empty()) latticeOrigin.x = scene.waveMakers.front().x;
     for (const BlockDef& b : scene.blocks)
-        e.initialParticles[b.material] = saturatingAdd(e.initialParticles[b.material], Lattice::onDomainLattice(b.min, b.max, s, scene.world.domainMin).size());
+        e.initialParticles[b.material] =
+            saturatingAdd(e.initialParticles[b.material], Lattice::onDomainLattice(b.min, b.max, s, latticeOrigin).size());
     for (const EmitterDef& em : scene.emitters) {
         const double active = std::min(em.end, scene.endTime) - em.start;
         if (active <= 0.0) continue;
