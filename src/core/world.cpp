@@ -160,6 +160,7 @@ struct World::Impl {
     std::vector<Paddle> paddles;
     /// Where the lattice of blocks and obstacles has a cell corner: the domain's corner, but
     /// in x the first wave maker's face (its particles continue the fluid's lattice from there).
+    /// io::estimate counts blocks by the same rule.
     glm::vec3 latticeOrigin;
     std::vector<DampingZoneDef> dampingZones;
     double time = 0.0;
