@@ -59,6 +59,9 @@ const std::vector<Scenario> kScenarios = {
     // The seed's four-material demo (demo 4: heavy oil, light oil, light water and water layer
     // by density), 20,000 particles from the start: issue 8's interactive target.
     {"four_materials", "scenes/many_materials.json", "", 0.0f, 0.0f, 0.0f},
+    // The default scene (make demo): a paddle's waves breaking on a 1:10 slope, 1.5 cm, one
+    // slice 4 spacings wide with periodic sides.
+    {"beach", "scenes/beach.json", "", 0.0f, 0.0f, 0.0f},
 };
 
 std::string shellOutput(const std::string& command) {
