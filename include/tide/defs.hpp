@@ -152,7 +152,10 @@ struct SolverDef {
 struct WorldDef {
     glm::vec3 domainMin{0.0f, 0.0f, 0.0f};  ///< container corner, m
     glm::vec3 domainMax{1.0f, 1.0f, 1.0f};  ///< container corner, m
-    bool walls = true;                      ///< keep particles inside the domain box
+    /// Keep particles inside the domain box: walls of boundary particles on the lattice blocks
+    /// fill, at the first and last whole cells inside the box (up to a spacing inside a face
+    /// that is not on it), so water put against any wall meets it at the lattice's spacing.
+    bool walls = true;
     /// Periodic axes: no walls across them, a particle leaving through max re-enters at min,
     /// and particles interact across the seam (nearest image). A periodic axis must be at
     /// least 2 kernel supports long; make it a whole number of spacings so blocks tile it.
