@@ -190,8 +190,9 @@ public:
 
     /// Fill a box with particles: the points of the lattice the walls and obstacles are sampled
     /// on (cell corners at domainMin, in x at the first wave maker's face) whose cells lie
-    /// inside the box. Leaves out points inside fixed obstacles, within half a spacing of a
-    /// moving obstacle or a wave maker, and closer than 0.9 spacing to any boundary particle.
+    /// inside the box. Leaves out points inside obstacles, within half a spacing of a moving
+    /// obstacle other than a box or of a wave maker, and closer than 0.9 spacing to any
+    /// boundary particle.
     /// Adds all of them or none (see AddStatus).
     AddStatus addBlock(const BlockDef& block);
     /// Whether a box lies inside the container (without walls: inside the periodic axes' extent).
