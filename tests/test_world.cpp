@@ -170,6 +170,20 @@ TEST(World, BlocksAgainstTheFarWallsStartStill) {
     EXPECT_EQ(world.countEscapedParticles(), 0u);
 }
 
+// An emitter's outlet must lie inside the walls, which stand up to a spacing inside a face
+// that is not on the lattice: its particles would start against or inside the wall's.
+TEST(World, EmittersStartInsideTheWalls) {
+    WorldDef def;
+    def.domainMax = {0.31f, 0.2f, 0.1f};  // the x-max wall at 0.30
+    def.particleSpacing = 0.02f;
+    World world(def);
+    world.addMaterial({});
+    EXPECT_NO_THROW(world.addEmitter({{0.26f, 0.05f, 0.03f}, {0.3f, 0.09f, 0.07f}, {-1.0f, 0.0f, 0.0f}}));
+    const EmitterDef pastTheWall{{0.3f, 0.05f, 0.03f}, {0.31f, 0.09f, 0.07f}, {-1.0f, 0.0f, 0.0f}};
+    expectRejected([&] { world.addEmitter(pastTheWall); }, "emitter");
+    expectRejected([&] { world.addEmitter(pastTheWall); }, "walls, [0, 0, 0]..[0.3, 0.2, 0.1]");
+}
+
 TEST(World, OutsideAndOverCapacityAddNothing) {
     WorldDef def;
     def.particleSpacing = 0.1f;

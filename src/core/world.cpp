@@ -220,10 +220,10 @@ struct World::Impl {
     [[nodiscard]] bool insideDomain(const Lattice& lattice) const {
         const glm::vec3 last = lattice.first + lattice.spacing * glm::vec3(lattice.count - 1u);
         const float slack = 1e-5f * glm::length(def.domainMax - def.domainMin);
+        const auto [min, max] = wallPlanes();  // the walls may stand inside the domain's faces
         for (int axis = 0; axis < 3; ++axis) {
             if (!def.walls && !periodic.periodic(axis)) continue;
-            if (lattice.first[axis] < def.domainMin[axis] - slack || last[axis] > def.domainMax[axis] + slack)
-                return false;
+            if (lattice.first[axis] < min[axis] - slack || last[axis] > max[axis] + slack) return false;
         }
         return true;
     }
@@ -737,7 +737,8 @@ std::uint32_t World::addEmitter(const EmitterDef& emitter) {
         throw std::invalid_argument("emitter.concentration: must be finite and >= 0, got " + show(emitter.concentration));
     if (!impl_->insideDomain(Lattice(emitter.min, emitter.max, impl_->def.particleSpacing)))
         throw std::invalid_argument("emitter: outlet " + show(emitter.min) + ".." + show(emitter.max) +
-                                    " lies outside the domain");
+                                    " lies outside the domain's walls, " + show(impl_->wallsMin()) + ".." +
+                                    show(impl_->wallsMax()));
     impl_->emitters.push_back(EmitterState{emitter});
     return static_cast<std::uint32_t>(impl_->emitters.size() - 1);
 }
