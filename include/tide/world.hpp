@@ -215,8 +215,8 @@ public:
     /// Add a wave paddle (a moving boundary, see WaveMakerDef). Add it before obstacles and
     /// blocks: blocks leave out the lattice points behind its face, and the first paddle's
     /// face puts the cell corners of the lattice they are sampled on in x (so that the water
-    /// continues the paddle's particles); the walls move onto that lattice too, while there is
-    /// no obstacle yet. Throws std::invalid_argument naming the field at fault.
+    /// continues the paddle's particles); the walls move onto that lattice too, while there are
+    /// no obstacles or particles yet. Throws std::invalid_argument naming the field at fault.
     void addWaveMaker(const WaveMakerDef& waveMaker);
     [[nodiscard]] std::uint32_t waveMakerCount() const;
     /// Horizontal displacement of wave maker `index`'s face at the still-water level at time t, m.

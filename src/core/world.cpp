@@ -162,6 +162,7 @@ struct World::Impl {
     /// in x the first wave maker's face (its particles continue the fluid's lattice from there).
     /// io::estimate counts blocks by the same rule.
     glm::vec3 latticeOrigin;
+    glm::vec3 wallsOrigin;  ///< latticeOrigin when the walls were sampled (wallPlanes)
     std::vector<DampingZoneDef> dampingZones;
     double time = 0.0;
     float soundSpeed = 0.0f;  ///< resolved at the first step when SolverDef::soundSpeed is 0
@@ -175,19 +176,22 @@ struct World::Impl {
           latticeSum(latticeKernelSum(solver->densityKernel(), d.solver.kernel, d.particleSpacing, h)),
           periodic(PeriodicBox::make(d.domainMin, d.domainMax, d.periodic)),
           viscosity(viscosityModel(d.solver.viscosity, solver->defaultViscosity())),
-          latticeOrigin(d.domainMin), soundSpeed(d.solver.soundSpeed) {
+          latticeOrigin(d.domainMin), wallsOrigin(d.domainMin), soundSpeed(d.solver.soundSpeed) {
         boundary.periodic = periodic;
         if (def.walls) sampleWalls();
     }
 
-    /// The container's walls, a shell as deep as the support, between wallsMin and wallsMax.
+    /// The container's walls, a shell as deep as the support, between wallsMin and wallsMax
+    /// on the lattice as it is now.
     void sampleWalls() {
+        wallsOrigin = latticeOrigin;
         const int layers = static_cast<int>(std::ceil(h / def.particleSpacing));
         boundary.sampleBoxShell(wallsMin(), wallsMax(), def.particleSpacing, layers, 1.0f / latticeSum, h, threads);
     }
 
-    /// Where the walls stand: on the lattice blocks fill (cell corners at latticeOrigin), at the
-    /// first and last whole cells inside the domain (on a periodic axis, at its ends). A block
+    /// Where the walls stand: on the lattice blocks fill (cell corners at latticeOrigin when
+    /// they were sampled), at the first and last whole cells inside the domain (on a periodic
+    /// axis, at its ends). A block
     /// against a wall then meets it a spacing from its particles on either side; with the walls
     /// at domain.min and domain.max a block against a max-side wall started up to a spacing
     /// short of it and fell into the gap (the stirred tank, 0.4 m at 1.5 cm: 1.1–1.3 m/s at its
@@ -199,7 +203,7 @@ struct World::Impl {
         const float s = def.particleSpacing;
         for (int axis = 0; axis < 3; ++axis) {
             if (periodic.periodic(axis)) continue;
-            const float o = latticeOrigin[axis];
+            const float o = wallsOrigin[axis];
             const float first = std::ceil((def.domainMin[axis] - o) / s - kOnSurface);
             const float last = std::floor((def.domainMax[axis] - o) / s + kOnSurface);
             if (last - first < 1.0f) continue;  // not one whole cell: the domain's own faces
@@ -679,9 +683,9 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     WaveMaker maker(def, d.domainMin.y, g);
     if (w.paddles.empty()) {
         // The fluid's lattice starts at the first paddle's face in x; the walls move onto it
-        // while they are all the boundary there is (wave makers come before obstacles).
+        // while nothing else is there (wave makers come before obstacles and blocks).
         w.latticeOrigin.x = def.x;
-        if (d.walls && w.obstacles.empty()) w.sampleWalls();
+        if (d.walls && w.obstacles.empty() && w.particles.size() == 0) w.sampleWalls();
     }
     const int layers = static_cast<int>(std::ceil(w.h / d.particleSpacing));
     // Across the tank between the walls, on their lattice.
