@@ -39,6 +39,11 @@ TEST(SceneSolver, ShiftingIsOffUnlessTheSceneSetsIt) {
     EXPECT_EQ(parseWithSolver(R"({"shifting": 0.2})").world.solver.shifting, 0.2f);
 }
 
+TEST(SceneSolver, DivergenceWarmStartIsHalfUnlessTheSceneSetsIt) {
+    EXPECT_EQ(parseWithSolver("{}").world.solver.divergenceWarmStart, 0.5f);
+    EXPECT_EQ(parseWithSolver(R"({"divergence_warm_start": 0})").world.solver.divergenceWarmStart, 0.0f);
+}
+
 TEST(SceneSolver, DifferenceFormIsOffUnlessTheSceneSetsIt) {
     EXPECT_EQ(parseWithSolver("{}").world.solver.differenceForm, 0.0f);
     EXPECT_EQ(parseWithSolver(R"({"difference_form": 0.5})").world.solver.differenceForm, 0.5f);

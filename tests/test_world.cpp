@@ -55,6 +55,7 @@ TEST(World, RejectsBadDefinitionsNamingTheField) {
                    "solver.differenceForm");
     expectRejected(with([](WorldDef& d) { d.solver.minDivergenceIterations = -2; }), "solver.minDivergenceIterations");
     expectRejected(with([](WorldDef& d) { d.solver.maxDivergenceError = 0.0f; }), "solver.maxDivergenceError");
+    expectRejected(with([](WorldDef& d) { d.solver.divergenceWarmStart = -0.1f; }), "solver.divergenceWarmStart");
     expectRejected(with([](WorldDef& d) { d.solver.minDt = 1.0f; }), "solver.minDt");
     World world{WorldDef{}};
     expectRejected([&] { world.addMaterial(MaterialDef{"oil", -3.0f, 0.1f, {}}); }, "restDensity");

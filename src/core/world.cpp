@@ -76,6 +76,7 @@ void validateWorldDef(const WorldDef& d) {
     if (s.minDivergenceIterations < -1)
         throw std::invalid_argument("solver.minDivergenceIterations: must be >= 0 (or -1: minIterations), got " +
                                     std::to_string(s.minDivergenceIterations));
+    requireInRange("solver.divergenceWarmStart", s.divergenceWarmStart, 0.0f, 1.0f);
     if (s.minIterations < 0 || s.maxIterations < std::max(1, s.minIterations))
         throw std::invalid_argument("solver.maxIterations: must be >= max(1, minIterations), got " +
                                     std::to_string(s.maxIterations));

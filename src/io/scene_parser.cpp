@@ -206,7 +206,8 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     const std::string path = "solver";
     if (!r.object(j, path, {"method", "kernel", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "viscosity",
                             "xsph", "momentum", "shifting", "difference_form", "clamp_negative_pressure", "support_ratio", "max_density_error",
-                            "max_divergence_error", "min_iterations", "min_divergence_iterations", "max_iterations"}))
+                            "max_divergence_error", "min_iterations", "min_divergence_iterations", "divergence_warm_start",
+                            "max_iterations"}))
         return;
     SolverDef& s = scene.world.solver;
     if (auto method = r.string(j, "method", path, false)) {
@@ -265,6 +266,11 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     if (auto v = r.number(j, "min_iterations", path, false, 0.0, 1000.0)) s.minIterations = static_cast<int>(*v);
     if (auto v = r.number(j, "min_divergence_iterations", path, false, 0.0, 1000.0))
         s.minDivergenceIterations = static_cast<int>(*v);
+    if (auto v = r.number(j, "divergence_warm_start", path, false, 0.0, 1.0)) {
+        s.divergenceWarmStart = static_cast<float>(*v);
+        if (s.method != "dfsph")
+            r.fail(join(path, "divergence_warm_start"), "only the dfsph solver takes it, got solver \"" + s.method + "\"");
+    }
     if (auto v = r.number(j, "max_iterations", path, false, 1.0, 10000.0)) s.maxIterations = static_cast<int>(*v);
     if (s.maxIterations < s.minIterations) r.fail(join(path, "max_iterations"), "must not be below min_iterations");
     if (auto v = r.number(j, "support_ratio", path, false, 1.0, 4.0)) scene.world.supportRatio = static_cast<float>(*v);

@@ -26,7 +26,8 @@ constexpr float kRelaxation = 0.5f;
 /// the density predicted over this step's neighbour lists; the density reached also counts
 /// pairs that come into range during the step (measured: up to 2 % more in a dam break).
 constexpr double kDensityTarget = 0.9;
-/// Fraction of the last step's κ (and κᵛ) a solve starts from; SPlisHSPlasH halves it too.
+/// Fraction of the last step's κ the density solve starts from; SPlisHSPlasH halves it too.
+/// The divergence solve's is SolverDef::divergenceWarmStart (the same half by default).
 constexpr float kWarmStart = 0.5f;
 /// Heavy-ball momentum of the density solve (Polyak 1964, "Some methods of speeding up the
 /// convergence of iteration methods"): each Jacobi update adds this fraction of the last
@@ -232,21 +233,23 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
     k_.resize(n);
     // p.warmDivergence sums κᵛ·Δt over this solve from here on (the pressure output and the
     // next warm start): no array of its own.
+    const float warmStart = ctx.solver.divergenceWarmStart;
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-        k_[i] = kWarmStart * p.warmDivergence[i];
+        k_[i] = warmStart * p.warmDivergence[i];
         p.warmDivergence[i] = k_[i];
     });
     // Applies k_, then packs the velocities as (v_j, 1/ρ_j) rows, (v_j, m_j/ρ_j) with several rest
     // densities, into positionK_ (free until the next applyPressure) for densityRate's SIMD
-    // loads, and the viscosity's after the solve.
+    // loads, and the viscosity's after the solve. Without a warm start there is nothing to
+    // apply first: a pair pass less a step (SolverDef::divergenceWarmStart).
     const bool uniform = contrast_.uniform();
-    auto push = [&] {
-        applyPressure(ctx, {});
+    auto push = [&](bool apply) {
+        if (apply) applyPressure(ctx, {});
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             positionK_[i] = glm::vec4(p.velocity[i], (uniform ? 1.0f : p.mass[i]) / p.density[i]);
         });
     };
-    push();
+    push(warmStart > 0.0f);
     const int minimum = ctx.solver.minDivergenceIterations >= 0 ? ctx.solver.minDivergenceIterations : ctx.solver.minIterations;
     const double tolerance = ctx.solver.maxDivergenceError >= 0.0f ? ctx.solver.maxDivergenceError : ctx.solver.maxDensityError;
     int iteration = 0;
@@ -266,7 +269,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             k_[i] = weight * error_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
             p.warmDivergence[i] += k_[i];
         });
-        push();
+        push(true);
     }
     return iteration;
 }
