@@ -288,6 +288,29 @@ TEST(DivergenceGuard, PressureSolvesThatStopShortAreCountedAndNamedInADivergence
                         " steps (solver.max_iterations 3)"),
               std::string::npos);
     EXPECT_NE(text.find("raise solver.max_iterations"), std::string::npos);
+    EXPECT_EQ(caught->solver, "dfsph");
+    EXPECT_EQ(caught->densityRatio, 1.0f);
+    EXPECT_EQ(text.find("pcisph"), std::string::npos) << "one rest density: no hint of another solver";
+}
+
+// A dfsph run with rest densities 5:1 or more apart that diverges is pointed at pcisph, which
+// holds the thin layers and thin boxes dfsph's Jacobi solve does not (docs/robustness.md); other
+// solvers and closer densities are not.
+TEST(DivergenceGuard, DfsphWithDensitiesFarApartIsPointedAtPcisph) {
+    Divergence d;
+    d.step = 12;
+    d.quantity = DivergedQuantity::Speed;
+    d.unconvergedOfLast32 = 3;
+    d.maxIterations = 100;
+    d.solver = "dfsph";
+    d.densityRatio = 25.0f;
+    EXPECT_NE(d.describe().find("25:1 apart"), std::string::npos) << d.describe();
+    EXPECT_NE(d.describe().find("solver.method \"pcisph\""), std::string::npos) << d.describe();
+    d.densityRatio = 2.0f;
+    EXPECT_EQ(d.describe().find("pcisph"), std::string::npos) << d.describe();
+    d.densityRatio = 25.0f;
+    d.solver = "pcisph";
+    EXPECT_EQ(d.describe().find("apart"), std::string::npos) << d.describe();
 }
 
 TEST(DivergenceGuard, ASaneDamBreakNeverTrips) {

@@ -96,6 +96,9 @@ inline constexpr float kRunawaySupports = 4.0f;
 /// A liquid compressed by half on average has collapsed (e.g. a forced time step far beyond
 /// stability): its mean max(ρ − ρ0, 0)/ρ0 above this stops the run.
 inline constexpr float kCollapsedCompression = 0.5f;
+/// Rest densities this many times apart: a dfsph run that diverges is told pcisph may hold
+/// it (measured: layers at 5:1 and 25:1 that dfsph did not hold, docs/robustness.md).
+inline constexpr float kFarApartDensities = 5.0f;
 
 /// Where and how a run diverged: the step, and the first particle (lowest index) at fault.
 struct Divergence {
@@ -115,6 +118,11 @@ struct Divergence {
     /// the solver.max_iterations they had: the usual way a pressure solve lets water collapse.
     int unconvergedOfLast32 = 0;
     int maxIterations = 0;
+    /// The solver (SolverDef::method) and the largest over the smallest rest density of the
+    /// materials: dfsph's Jacobi solve may not hold several densities far apart where pcisph
+    /// does (docs/robustness.md § Thin layers of two densities), and the report says so.
+    std::string solver;
+    float densityRatio = 1.0f;
     /// One line for people, e.g. "step 12 (t = 0.034 s): particle 5 (id 7) has a non-finite velocity (nan)".
     [[nodiscard]] std::string describe() const;
 };

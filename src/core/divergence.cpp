@@ -33,6 +33,9 @@ std::string Divergence::describe() const {
         out << "; before it, the pressure solve stopped short of its density tolerance in " << unconvergedOfLast32
             << " of the last " << std::min<std::uint64_t>(step, 32) << " steps (solver.max_iterations " << maxIterations
             << "): raise solver.max_iterations, shorten solver.max_dt, or (dfsph) keep solver.momentum on";
+    if (solver == "dfsph" && densityRatio >= kFarApartDensities)
+        out << "; the rest densities are " << densityRatio
+            << ":1 apart, which dfsph may not hold in thin boxes or thin layers: solver.method \"pcisph\" does";
     return out.str();
 }
 

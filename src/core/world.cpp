@@ -126,6 +126,15 @@ struct World::Impl {
     PeriodicBox periodic;
     ViscosityModel viscosity;
     std::vector<MaterialDef> materials;
+    /// The largest over the smallest rest density of the materials (1 for none).
+    [[nodiscard]] float restDensityRatio() const {
+        float lo = 0.0f, hi = 0.0f;
+        for (const MaterialDef& m : materials) {
+            lo = lo == 0.0f ? m.restDensity : std::min(lo, m.restDensity);
+            hi = std::max(hi, m.restDensity);
+        }
+        return lo > 0.0f ? hi / lo : 1.0f;
+    }
     std::vector<MaterialPairDef> pairs;
     MaterialPairs pairTables;  ///< built from materials and pairs at every step
     DyeDiffusion diffusion;
@@ -822,6 +831,8 @@ double World::Impl::step(double maxDt, Clock clockMode) {
         diverged->dt = dt;
         diverged->unconvergedOfLast32 = std::popcount(w.stats.recentUnconverged);
         diverged->maxIterations = w.def.solver.maxIterations;
+        diverged->solver = w.def.solver.method;
+        diverged->densityRatio = w.restDensityRatio();
         w.divergence = diverged;
         throw DivergenceError(*diverged);
     }
