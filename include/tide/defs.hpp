@@ -144,7 +144,7 @@ struct SolverDef {
     /// dfsph's divergence-free solve starts from this fraction of the last step's κᵛ (the warm
     /// start of Bender & Koschier 2017 §4.3), in [0, 1]. Applying it is a pair pass a step; 0
     /// skips it. Where the solve stops at its minimum either way (the benchmark corner dam
-    /// break: 1.00 iteration a step) that pass buys nothing (2–6 % of the 200k run's wall time), but
+    /// break: 1.00 iteration a step) that pass buys nothing (1–6 % of the 200k run's wall time), but
     /// elsewhere it saves iterations (SPlisHSPlasH's model dam break: 6.5 against 7.0 a
     /// step), and settled still water moves more without it (0.04 against < 0.02 m/s).
     float divergenceWarmStart = 0.5f;
