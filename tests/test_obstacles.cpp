@@ -360,6 +360,25 @@ TEST(BoundaryParticles, OverlappingSolidsAreSampledOnce) {
     EXPECT_EQ(b.size(), shell + points.size() - below);
 }
 
+// Every boundary particle samples the fluid's lattice, so they share one volume; particles of
+// another volume are refused, naming both, and none is added.
+TEST(BoundaryParticles, ShareOneVolume) {
+    BoundaryParticles b;
+    b.sampleBoxShell({0, 0, 0}, {0.2f, 0.2f, 0.2f}, 0.02f, 2, 8e-6f, 0.04f, 1);
+    EXPECT_EQ(b.volume, 8e-6f);
+    const auto shell = b.size();
+    const std::vector<glm::vec3> inside{{0.1f, 0.1f, 0.1f}};
+    try {
+        b.addMoving(inside, 1e-5f);
+        ADD_FAILURE() << "accepted a second volume";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("volume"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(b.add(inside, 1e-5f, 0.01f, 0.04f, 1), std::invalid_argument);
+    EXPECT_EQ(b.size(), shell);
+    EXPECT_EQ(b.add(inside, 8e-6f, 0.01f, 0.04f, 1), 1u);
+}
+
 TEST(World, ValidatesAndNormalisesObstacles) {
     WorldDef def;
     def.particleSpacing = 0.05f;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -50,7 +52,7 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
         for (std::size_t j = 0; j < ys.size(); ++j)
             for (std::size_t i = 0; i < xs.size(); ++i)
                 if (!(inX[i] && inY[j] && inZ[k])) position.emplace_back(xs[i], ys[j], zs[k]);
-    volume.assign(position.size(), particleVolume);
+    volume = particleVolume;
     velocity.assign(moving ? position.size() : 0, glm::vec3(0.0f));
     acceleration.assign(moving ? position.size() : 0, glm::vec3(0.0f));
     movable.assign(position.size(), 0);
@@ -59,6 +61,7 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
 
 std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float particleVolume, float minSeparation,
                                      float searchRadius, int threads) {
+    setVolume(particleVolume);
     // Moving particles are elsewhere soon: fixed points are checked against fixed particles only.
     std::vector<std::uint8_t> keep(points.size(), 1);
     movable.resize(position.size(), 0);  // positions set by hand are fixed
@@ -68,7 +71,6 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
     const std::size_t before = position.size();
     for (std::size_t i = 0; i < points.size(); ++i)
         if (keep[i]) position.push_back(points[i]);
-    volume.resize(position.size(), particleVolume);
     if (moving) {
         velocity.resize(position.size(), glm::vec3(0.0f));
         acceleration.resize(position.size(), glm::vec3(0.0f));
@@ -76,6 +78,14 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
     movable.resize(position.size(), 0);
     grid.build(position, searchRadius, threads, periodic);
     return static_cast<std::uint32_t>(position.size() - before);
+}
+
+void BoundaryParticles::setVolume(float particleVolume) {
+    if (!position.empty() && particleVolume != volume)
+        throw std::invalid_argument("BoundaryParticles: volume " + std::to_string(particleVolume) +
+                                    " m3 differs from the " + std::to_string(volume) +
+                                    " m3 of the boundary particles already sampled (all sample one lattice)");
+    volume = particleVolume;
 }
 
 bool BoundaryParticles::anyCloserThan(const glm::vec3& x, float radius, bool fixedOnly) const {
@@ -96,9 +106,9 @@ bool BoundaryParticles::anyCloserThan(const glm::vec3& x, float radius, bool fix
 }
 
 std::uint32_t BoundaryParticles::addMoving(std::span<const glm::vec3> points, float particleVolume) {
+    setVolume(particleVolume);
     const auto begin = static_cast<std::uint32_t>(position.size());
     position.insert(position.end(), points.begin(), points.end());
-    volume.resize(position.size(), particleVolume);
     velocity.resize(position.size(), glm::vec3(0.0f));
     acceleration.resize(position.size(), glm::vec3(0.0f));
     movable.resize(position.size(), 1);

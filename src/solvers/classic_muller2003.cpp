@@ -27,7 +27,7 @@ void ClassicMuller2003::computeDensityAndPressure(StepContext& ctx) const {
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 d = ctx.delta(xi, ctx.boundary.position[b]);
-            boundaryVolume += ctx.boundary.volume[b] * poly6.valueSq(glm::dot(d, d));
+            boundaryVolume += ctx.boundary.volume * poly6.valueSq(glm::dot(d, d));
         }
         const MaterialDef& mat = ctx.materials[p.material[i]];
         rho += mat.restDensity * boundaryVolume;  // Akinci et al. 2012, eq. (4), Ψ_b = ρ0_i V_b
@@ -71,9 +71,9 @@ void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             const float r = glm::length(rib);
-            if (r > 0.0f) pressureSum += (ctx.boundary.volume[b] * pi * -spiky.gradientScale(r) / r) * rib;
+            if (r > 0.0f) pressureSum += (ctx.boundary.volume * pi * -spiky.gradientScale(r) / r) * rib;
             if (!muller) continue;
-            const float weight = ctx.boundary.volume[b] * viscosity.laplacian(r);
+            const float weight = ctx.boundary.volume * viscosity.laplacian(r);
             wallViscosity += weight;
             if (ctx.boundary.moving) wallDrive += weight * ctx.boundary.velocity[b];
         }

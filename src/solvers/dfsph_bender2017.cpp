@@ -86,7 +86,7 @@ void DfsphBender2017::prepare(StepContext& ctx) {
             for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
                 const glm::vec3 d = delta(xi, ctx.boundary.position[b]);
                 const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
-                volume += ctx.boundary.volume[b] * w.value(r);
+                volume += ctx.boundary.volume * w.value(r);
                 *f++ = wallF_.encode(w, r);
             }
             if (!uniform) rho *= p.mass[i];  // ρ_i = m_i δ_i
@@ -126,7 +126,7 @@ void DfsphBender2017::computeAlpha(StepContext& ctx) {
         const PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
         float wallRate = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 g = (ctx.boundary.volume[b] * wallF_.factor(*f++)) * ctx.delta(xi, ctx.boundary.position[b]);
+            const glm::vec3 g = (ctx.boundary.volume * wallF_.factor(*f++)) * ctx.delta(xi, ctx.boundary.position[b]);
             wallGrad += g;
             if (ctx.boundary.moving) wallRate += glm::dot(ctx.boundary.velocity[b], g);
         }
@@ -170,7 +170,7 @@ float DfsphBender2017::predictedDensity(const StepContext& ctx, PairVector delta
     const glm::vec3* wallX = ctx.boundary.moving ? wallMoved_.data() : ctx.boundary.position.data();
     for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
         const glm::vec3 r = delta(xi, wallX[b]);
-        volume += ctx.boundary.volume[b] * w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
+        volume += ctx.boundary.volume * w.value(std::sqrt(r.x * r.x + r.y * r.y + r.z * r.z));
     }
     return rho + ctx.materials[ctx.particles.material[i]].restDensity * volume;
 }
@@ -206,7 +206,7 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
                 // boundary particle (~25 a fluid particle at 205k).
                 for (std::size_t k = 0; k < walls.size(); ++k) {
                     const std::uint32_t b = walls[k];
-                    const float volumeK = ctx.boundary.volume[b] * boundaryK[b];
+                    const float volumeK = ctx.boundary.volume * boundaryK[b];
                     pushed += (volumeK * wallF_.factor(fb[k])) * delta(xi, ctx.boundary.position[b]);
                 }
                 // k̃_b is p_b/ρ0_ref (density contrast): fluid i reads k_b = k̃_b ρ0_ref/ρ0_i.

@@ -59,7 +59,7 @@ void PcisphSolenthaler2009::computeDelta(StepContext& ctx, float dt) {
         glm::vec3 boundaryGrad(0.0f);
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
-            boundaryGrad += (rho0 * ctx.boundary.volume[b]) * w.gradient(rib, glm::length(rib));
+            boundaryGrad += (rho0 * ctx.boundary.volume) * w.gradient(rib, glm::length(rib));
         }
         // Walls push with the mirrored pressure (Ψ_b (p_i + p_b)/ρ0², p_b ≈ p_i), so i's own
         // displacement is −Δt² p̃/ρ0² 2(G_f + G_b).
@@ -94,7 +94,7 @@ void PcisphSolenthaler2009::predictCompression(StepContext& ctx, float dt) {
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 xb = moving ? ctx.boundary.position[b] + dt * ctx.boundary.velocity[b] : ctx.boundary.position[b];
-            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, xb)));
+            boundaryVolume += ctx.boundary.volume * w.value(glm::length(ctx.delta(xi, xb)));
         }
         const float rho0 = ctx.materials[p.material[i]].restDensity;
         residual_[i] = rho + rho0 * boundaryVolume - rho0;
@@ -143,7 +143,7 @@ void PcisphSolenthaler2009::computePressureAccel(StepContext& ctx) {
         const float wallScale = 1.0f / contrast_.scale(i);
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
-            sum += (ctx.boundary.volume[b] * (rho0 * pi + wallScale * wallKappa[b])) * w.gradient(rib, glm::length(rib));
+            sum += (ctx.boundary.volume * (rho0 * pi + wallScale * wallKappa[b])) * w.gradient(rib, glm::length(rib));
         }
         pressureAccel_[i] = -sum;
     });

@@ -51,7 +51,7 @@ inline void computeDensities(StepContext& ctx, const glm::vec4* positionMass = n
         }
         float boundaryVolume = 0.0f;
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-            boundaryVolume += ctx.boundary.volume[b] * w.value(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
+            boundaryVolume += ctx.boundary.volume * w.value(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
         p.density[i] = rho + ctx.materials[p.material[i]].restDensity * boundaryVolume;
     });
 }

@@ -88,7 +88,7 @@ float addSurfaceTension(const StepContext& ctx, std::span<glm::vec3> accel) {
             for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
                 const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
                 const float r = glm::length(rib);
-                if (r > 0.0f) wall += (ctx.boundary.volume[b] * adhesionKernel.value(r) / r) * rib;
+                if (r > 0.0f) wall += (ctx.boundary.volume * adhesionKernel.value(r) / r) * rib;
             }
             sum -= (mat.adhesion * mat.restDensity) * wall;
         }

@@ -79,7 +79,7 @@ void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
                 const float r = glm::length(rib);
                 const glm::vec3 vb = ctx.boundary.moving ? wallVelocity(vi, ctx.boundary.velocity[b]) : wallVelocity(vi);
                 const float vr = glm::dot(vi - vb, rib);
-                wallSum += (ctx.boundary.volume[b] * vr / (r * r + 0.01f * h2)) * w.gradient(rib, r);
+                wallSum += (ctx.boundary.volume * vr / (r * r + 0.01f * h2)) * w.gradient(rib, r);
             }
             sum += (ctx.materials[p.material[i]].restDensity / p.density[i] * mui / p.density[i]) * wallSum;
         }
@@ -125,14 +125,14 @@ void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
                 float wallWeight = 0.0f;
                 for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
                     const float r = glm::length(ctx.delta(xi, ctx.boundary.position[b]));
-                    wallWeight += ctx.boundary.volume[b] * r * w.derivative(r) / (r * r + 0.01f * h2);
+                    wallWeight += ctx.boundary.volume * r * w.derivative(r) / (r * r + 0.01f * h2);
                 }
                 sum += (scale * wallWeight) * (vi - wallVelocity(vi));
             } else {
                 glm::vec3 wallSum(0.0f);
                 for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
                     const float r = glm::length(ctx.delta(xi, ctx.boundary.position[b]));
-                    wallSum += (ctx.boundary.volume[b] * r * w.derivative(r) / (r * r + 0.01f * h2)) *
+                    wallSum += (ctx.boundary.volume * r * w.derivative(r) / (r * r + 0.01f * h2)) *
                                (vi - wallVelocity(vi, ctx.boundary.velocity[b]));
                 }
                 sum += scale * wallSum;
@@ -161,11 +161,11 @@ void addMuller2003(const StepContext& ctx, std::span<glm::vec3> accel) {
             if (!ctx.boundary.moving) {
                 float wallWeight = 0.0f;
                 for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-                    wallWeight += ctx.boundary.volume[b] * viscosity.laplacian(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
+                    wallWeight += ctx.boundary.volume * viscosity.laplacian(glm::length(ctx.delta(xi, ctx.boundary.position[b])));
                 sum += (mui * wallWeight) * (wallVelocity(vi) - vi);
             } else {
                 for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))
-                    sum += (mui * ctx.boundary.volume[b] * viscosity.laplacian(glm::length(ctx.delta(xi, ctx.boundary.position[b])))) *
+                    sum += (mui * ctx.boundary.volume * viscosity.laplacian(glm::length(ctx.delta(xi, ctx.boundary.position[b])))) *
                            (wallVelocity(vi, ctx.boundary.velocity[b]) - vi);
             }
         }

@@ -75,7 +75,7 @@ double WcsphBecker2007::step(StepContext& ctx) {
         const float wallScale = 1.0f / contrast_.scale(i);
         for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
             const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
-            sum += (ctx.boundary.volume[b] * psi * (kappa_[i] + wallScale * wallKappa[b])) * w.gradient(rib, glm::length(rib));
+            sum += (ctx.boundary.volume * psi * (kappa_[i] + wallScale * wallKappa[b])) * w.gradient(rib, glm::length(rib));
         }
         p.acceleration[i] = accel_[i] - sum;
     });
