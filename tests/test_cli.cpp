@@ -76,6 +76,8 @@ std::vector<BrokenScene> brokenScenes() {
         {"end time negative", replace(ok, "\"end_time\": 0.1", "\"end_time\": -1"), "end_time"},
         {"number beyond double", replace(ok, "\"end_time\": 0.1", "\"end_time\": 1e400"), "number 1e400 is out of range"},
         {"end time a string", replace(ok, "\"end_time\": 0.1", "\"end_time\": \"soon\""), "end_time"},
+        {"end time short of a frame", replace(ok, "\"end_time\": 0.1", "\"end_time\": 0.04"),
+         "end_time: 0.04 s is shorter than one frame at output.fps 20 (0.05 s)"},
         {"no materials", replace(ok, R"([{"name": "water", "density": 1000, "viscosity": 0.001}])", "[]"), "materials"},
         {"negative density", replace(ok, "\"density\": 1000", "\"density\": -1000"), "materials[0].density"},
         {"density missing", replace(ok, "\"density\": 1000, ", ""), "materials[0].density"},
@@ -187,6 +189,38 @@ TEST(Cli, BadFlagsExitTwo) {
     EXPECT_EQ(help.exit, 0);
     for (const char* flag : {"--out", "--end-time", "--threads", "--format", "--solver", "--force", "--quiet"})
         EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
+}
+
+// An end time short of frame 1 would simulate nothing: refused by name before the output folder
+// is touched. One between two frames runs to the frame before it (frame k lands on k/fps) and
+// says so; before, both ran silently (0.05 s at 10 fps: 0 steps, exit 0).
+TEST(Cli, EndTimeShortOfAFrameIsRefusedAndOneBetweenFramesWarns) {
+    const fs::path scene = writeScene("end_time", smallScene());
+    const fs::path out = scratch("end_time_out");
+    const Result refused = run(kTide + " run " + scene.string() + " --quiet --end-time 0.03 --out " + out.string());
+    EXPECT_EQ(refused.exit, 2);
+    EXPECT_NE(refused.output.find("--end-time: 0.03 s is shorter than one frame at output.fps 20 (0.05 s)"),
+              std::string::npos)
+        << refused.output;
+    EXPECT_FALSE(fs::exists(out));
+    const Result render = run(kTide + " render " + scene.string() + " --end-time 0.03 --out " + scratch("end_time_render").string());
+    EXPECT_EQ(render.exit, 2) << render.output;
+    EXPECT_NE(render.output.find("--end-time: 0.03 s"), std::string::npos) << render.output;
+
+    const Result between = run(kTide + " run " + scene.string() + " --quiet --end-time 0.12 --out " + out.string());
+    ASSERT_EQ(between.exit, 0) << between.output;
+    EXPECT_NE(between.output.find("end time 0.12 s is not a whole number of frames at output.fps 20: the run stops at "
+                                  "frame 2, t = 0.1 s"),
+              std::string::npos)
+        << between.output;
+    EXPECT_TRUE(fs::exists(out / "frame_00002.vtu"));
+    EXPECT_FALSE(fs::exists(out / "frame_00003.vtu"));
+    const std::string stats = expectFullStats(out);
+    EXPECT_NE(stats.find("\"sim_time\": 0.1"), std::string::npos) << stats;
+    // A whole number of frames says nothing.
+    const Result whole = run(kTide + " run " + scene.string() + " --quiet --force --end-time 0.15 --out " + out.string());
+    ASSERT_EQ(whole.exit, 0) << whole.output;
+    EXPECT_EQ(whole.output.find("whole number of frames"), std::string::npos) << whole.output;
 }
 
 TEST(Cli, RunWritesEveryFormatAndStats) {

@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+namespace tide::io {
+struct Scene;
+}
+
 namespace tide::cli {
 
 /// Exit codes: 0 success, 1 a run that failed (e.g. diverged), 2 bad input.
@@ -44,5 +48,9 @@ int renderCommand(const RenderOptions& options);
 /// Prints each problem of a bad scene on stderr, prefixed with the file unless it already is.
 void reportSceneProblems(const std::string& file, const std::vector<std::string>& problems);
 int validateCommand(const std::string& scene);
+/// The scene's end time after --end-time (`fromFlag`) or a resumed run's: false, saying why on
+/// stderr, when it reaches no frame after frame 0; true, with a warning when it falls between
+/// frames (the run stops at the last frame before it).
+bool checkEndTime(const io::Scene& scene, bool fromFlag, const std::string& file);
 
 }  // namespace tide::cli

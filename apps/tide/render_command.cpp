@@ -79,6 +79,7 @@ int renderCommand(const RenderOptions& o) {
         return kExitBadInput;
     }
     if (o.endTime) scene.endTime = *o.endTime;
+    if (!checkEndTime(scene, o.endTime.has_value(), o.scene)) return kExitBadInput;
     scene.world.threads = o.threads;
     fs::path ffmpeg;
     if (!o.video.empty()) {
@@ -118,7 +119,7 @@ int renderCommand(const RenderOptions& o) {
         scene.camera ? render::fitClipPlanes({scene.camera->eye, scene.camera->target, scene.camera->fovDegrees}, lo, hi)
                      : render::defaultCamera(lo, hi);
 
-    const int frames = static_cast<int>(std::floor(scene.endTime * scene.output.fps + 1e-9));
+    const int frames = io::framesAfterTheFirst(scene);
     const auto start = std::chrono::steady_clock::now();
     std::uint64_t particleSteps = 0;
     try {

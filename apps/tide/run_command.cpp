@@ -123,6 +123,7 @@ int runCommand(const RunOptions& o) {
     const double sceneEndTime = scene.endTime;
     if (o.endTime) scene.endTime = *o.endTime;
     else if (resumed) scene.endTime = resumed->progress.endTime;
+    if (!checkEndTime(scene, o.endTime.has_value(), o.scene)) return kExitBadInput;
     const std::string solver = !o.solver.empty() ? o.solver : resumed ? resumed->progress.solver : scene.world.solver.method;
     if (solver != scene.world.solver.method) {
         const auto known = solverNames();
@@ -198,7 +199,7 @@ int runCommand(const RunOptions& o) {
         return kExitBadInput;
     }
 
-    const int frames = static_cast<int>(std::floor(scene.endTime * scene.output.fps + 1e-9));
+    const int frames = io::framesAfterTheFirst(scene);
     const int checkpointEvery = o.checkpointEvery > 0 ? o.checkpointEvery : done.checkpointEvery;
     std::vector<std::string> formatNames;
     for (const io::Format f : scene.output.formats) formatNames.emplace_back(io::extension(f));

@@ -24,6 +24,31 @@ Scene loadScene(const std::filesystem::path& file) {
     return parseScene(text.str(), file.string(), file.parent_path());
 }
 
+int framesAfterTheFirst(const Scene& scene) {
+    // The margin keeps an end time that is a whole number of frames in decimal (0.3 s at 10 fps)
+    // from losing its last frame to rounding.
+    const double frames = std::floor(scene.endTime * scene.output.fps + 1e-9);
+    return frames < 2147483647.0 ? static_cast<int>(frames) : 2147483647;
+}
+
+std::string endTimeShortOfAFrame(const Scene& scene) {
+    if (framesAfterTheFirst(scene) > 0) return {};
+    std::ostringstream msg;
+    msg << scene.endTime << " s is shorter than one frame at output.fps " << scene.output.fps << " ("
+        << 1.0 / scene.output.fps << " s): nothing would be simulated";
+    return msg.str();
+}
+
+std::string endTimeBetweenFrames(const Scene& scene) {
+    const int frames = framesAfterTheFirst(scene);
+    const double last = frames / scene.output.fps;
+    if (frames == 0 || scene.endTime - last <= 1e-9 * std::max(1.0, scene.endTime)) return {};
+    std::ostringstream msg;
+    msg << scene.endTime << " s is not a whole number of frames at output.fps " << scene.output.fps
+        << ": the run stops at frame " << frames << ", t = " << last << " s";
+    return msg.str();
+}
+
 std::uint64_t availableMemoryBytes() {
     std::ifstream meminfo("/proc/meminfo");
     std::string key;

@@ -951,6 +951,9 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
             scene.camera = CameraDef{*eye * scale, *target * scale, fov ? static_cast<float>(*fov) : 45.0f};
     }
 
+    if (r.problems.empty())
+        if (const std::string shortOfAFrame = endTimeShortOfAFrame(scene); !shortOfAFrame.empty())
+            r.fail("end_time", shortOfAFrame);
     if (r.problems.empty()) {
         const SceneEstimate size = estimate(scene);
         if (const std::string shortfall = memoryShortfall(scene); !shortfall.empty()) {
