@@ -78,6 +78,8 @@ std::vector<BrokenScene> brokenScenes() {
         {"end time a string", replace(ok, "\"end_time\": 0.1", "\"end_time\": \"soon\""), "end_time"},
         {"end time short of a frame", replace(ok, "\"end_time\": 0.1", "\"end_time\": 0.04"),
          "end_time: 0.04 s is shorter than one frame at output.fps 20 (0.05 s)"},
+        {"end time of too many frames", replace(ok, "\"end_time\": 0.1", "\"end_time\": 1e7"),
+         "end_time: 1e+07 s at output.fps 20 is 2e+08 frames, more than the 1e+08 a run may write"},
         {"no materials", replace(ok, R"([{"name": "water", "density": 1000, "viscosity": 0.001}])", "[]"), "materials"},
         {"negative density", replace(ok, "\"density\": 1000", "\"density\": -1000"), "materials[0].density"},
         {"density missing", replace(ok, "\"density\": 1000, ", ""), "materials[0].density"},

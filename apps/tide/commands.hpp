@@ -49,8 +49,8 @@ int renderCommand(const RenderOptions& options);
 void reportSceneProblems(const std::string& file, const std::vector<std::string>& problems);
 int validateCommand(const std::string& scene);
 /// The scene's end time after --end-time (`fromFlag`) or a resumed run's: false, saying why on
-/// stderr, when it reaches no frame after frame 0; true, with a warning when it falls between
-/// frames (the run stops at the last frame before it).
+/// stderr, when it reaches no frame after frame 0 or asks for more than io::kMaxFrames; true,
+/// with a warning when it falls between frames (the run stops at the last frame before it).
 bool checkEndTime(const io::Scene& scene, bool fromFlag, const std::string& file);
 
 }  // namespace tide::cli

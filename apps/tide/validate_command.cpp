@@ -18,9 +18,9 @@ void reportSceneProblems(const std::string& file, const std::vector<std::string>
 }
 
 bool checkEndTime(const io::Scene& scene, bool fromFlag, const std::string& file) {
-    if (const std::string shortOfAFrame = io::endTimeShortOfAFrame(scene); !shortOfAFrame.empty()) {
-        if (fromFlag) std::fprintf(stderr, "--end-time: %s\n", shortOfAFrame.c_str());
-        else std::fprintf(stderr, "%s: end_time: %s\n", file.c_str(), shortOfAFrame.c_str());
+    if (const std::string problem = io::endTimeProblem(scene); !problem.empty()) {
+        if (fromFlag) std::fprintf(stderr, "--end-time: %s\n", problem.c_str());
+        else std::fprintf(stderr, "%s: end_time: %s\n", file.c_str(), problem.c_str());
         return false;
     }
     if (const std::string between = io::endTimeBetweenFrames(scene); !between.empty())

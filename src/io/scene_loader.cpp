@@ -24,18 +24,23 @@ Scene loadScene(const std::filesystem::path& file) {
     return parseScene(text.str(), file.string(), file.parent_path());
 }
 
-int framesAfterTheFirst(const Scene& scene) {
-    // The margin keeps an end time that is a whole number of frames in decimal (0.3 s at 10 fps)
-    // from losing its last frame to rounding.
-    const double frames = std::floor(scene.endTime * scene.output.fps + 1e-9);
-    return frames < 2147483647.0 ? static_cast<int>(frames) : 2147483647;
-}
+namespace {
+/// ⌊end_time · fps⌋; the margin keeps an end time that is a whole number of frames in decimal
+/// (0.3 s at 10 fps) from losing its last frame to rounding.
+double frameCount(const Scene& scene) { return std::floor(scene.endTime * scene.output.fps + 1e-9); }
+}  // namespace
 
-std::string endTimeShortOfAFrame(const Scene& scene) {
-    if (framesAfterTheFirst(scene) > 0) return {};
+int framesAfterTheFirst(const Scene& scene) { return static_cast<int>(std::clamp(frameCount(scene), 0.0, kMaxFrames)); }
+
+std::string endTimeProblem(const Scene& scene) {
+    const double frames = frameCount(scene);
     std::ostringstream msg;
-    msg << scene.endTime << " s is shorter than one frame at output.fps " << scene.output.fps << " ("
-        << 1.0 / scene.output.fps << " s): nothing would be simulated";
+    if (frames < 1.0)
+        msg << scene.endTime << " s is shorter than one frame at output.fps " << scene.output.fps << " ("
+            << 1.0 / scene.output.fps << " s): nothing would be simulated";
+    else if (frames > kMaxFrames)
+        msg << scene.endTime << " s at output.fps " << scene.output.fps << " is " << frames << " frames, more than the "
+            << kMaxFrames << " a run may write";
     return msg.str();
 }
 

@@ -952,8 +952,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     }
 
     if (r.problems.empty())
-        if (const std::string shortOfAFrame = endTimeShortOfAFrame(scene); !shortOfAFrame.empty())
-            r.fail("end_time", shortOfAFrame);
+        if (const std::string problem = endTimeProblem(scene); !problem.empty()) r.fail("end_time", problem);
     if (r.problems.empty()) {
         const SceneEstimate size = estimate(scene);
         if (const std::string shortfall = memoryShortfall(scene); !shortfall.empty()) {

@@ -92,12 +92,14 @@ SceneEstimate estimate(const Scene& scene);
 /// scene three times too big for the machine through.
 inline constexpr std::uint64_t kBytesPerParticle = 1024;
 
+/// Most frames a run may write (frame numbers are ints).
+inline constexpr double kMaxFrames = 1e8;
 /// Frames a run writes after frame 0: frame k at k/fps for k = 1 … ⌊end_time · fps⌋. The run
-/// stops at the last of them.
+/// stops at the last of them. Meaningful when endTimeProblem(scene) is empty.
 int framesAfterTheFirst(const Scene& scene);
-/// Empty when end_time reaches frame 1; otherwise why nothing would be simulated:
-/// "0.05 s is shorter than one frame at output.fps 10 (0.1 s): nothing would be simulated".
-std::string endTimeShortOfAFrame(const Scene& scene);
+/// Empty when end_time reaches frame 1 and asks for at most kMaxFrames frames; otherwise why
+/// not: "0.05 s is shorter than one frame at output.fps 10 (0.1 s): nothing would be simulated".
+std::string endTimeProblem(const Scene& scene);
 /// Empty when end_time lands on a frame; otherwise where the run stops short of it:
 /// "0.25 s is not a whole number of frames at output.fps 10: the run stops at frame 2, t = 0.2 s".
 std::string endTimeBetweenFrames(const Scene& scene);
