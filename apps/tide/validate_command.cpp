@@ -100,7 +100,7 @@ int validateCommand(const std::string& file) {
                 w.domainMin.x, w.domainMin.y, w.domainMin.z, w.domainMax.x, w.domainMax.y, w.domainMax.z,
                 periodic.c_str(), w.particleSpacing, w.particleSpacing * w.supportRatio);
     std::printf("solver     %s, end time %g s, %d frames at %g fps\n", w.solver.method.c_str(), scene.endTime,
-                static_cast<int>(scene.endTime * scene.output.fps + 1e-9) + 1, scene.output.fps);
+                io::framesAfterTheFirst(scene) + 1, scene.output.fps);
     if (scene.settleTime > 0.0) {
         std::printf("settle     up to %g s of pre-roll before frame 0", scene.settleTime);
         if (scene.settleSpeed > 0.0f)
