@@ -19,4 +19,4 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/tideConfig.cmake.in
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/tideConfigVersion.cmake
   COMPATIBILITY SameMinorVersion)
 install(FILES ${PROJECT_BINARY_DIR}/tideConfig.cmake ${PROJECT_BINARY_DIR}/tideConfigVersion.cmake
-  DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/tide)
+  ${PROJECT_SOURCE_DIR}/cmake/TideOpenVDB.cmake DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/tide)

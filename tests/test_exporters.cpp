@@ -116,13 +116,15 @@ TEST(ExportFormat, ParsesExactLowercaseNamesAndGivesExtensions) {
     EXPECT_EQ(parseFormat("vtu"), Format::Vtu);
     EXPECT_EQ(parseFormat("ply"), Format::Ply);
     EXPECT_EQ(parseFormat("csv"), Format::Csv);
+    EXPECT_EQ(parseFormat("obj"), Format::Obj);
     EXPECT_EQ(parseFormat("VTU"), std::nullopt);
     EXPECT_EQ(parseFormat(".csv"), std::nullopt);
     EXPECT_EQ(parseFormat(""), std::nullopt);
     EXPECT_EQ(extension(Format::Vtu), "vtu");
     EXPECT_EQ(extension(Format::Ply), "ply");
     EXPECT_EQ(extension(Format::Csv), "csv");
-    for (const Format f : {Format::Vtu, Format::Ply, Format::Csv}) EXPECT_EQ(parseFormat(extension(f)), f);
+    EXPECT_EQ(extension(Format::Obj), "obj");
+    for (const Format f : {Format::Vtu, Format::Ply, Format::Csv, Format::Obj}) EXPECT_EQ(parseFormat(extension(f)), f);
 }
 
 TEST_F(Exporters, CsvHasTheContractHeaderAndRoundTripsEveryValue) {
@@ -440,10 +442,10 @@ TEST_F(Exporters, AtomicWriteKeepsTheOldContentWhenTheWriterThrows) {
 }
 
 TEST_F(Exporters, WritingIntoAMissingDirectoryThrowsNamingThePath) {
-    for (const Format format : {Format::Csv, Format::Ply, Format::Vtu}) {
+    for (const Format format : {Format::Csv, Format::Ply, Format::Vtu, Format::Obj}) {
         const fs::path file = dir_ / "missing" / (std::string("frame.").append(extension(format)));
         try {
-            writeFrame(file, format, particles_);
+            writeFrame(file, format, particles_, SurfaceMeshDef{0.02f, {}, 1});
             FAIL() << "wrote into a missing directory";
         } catch (const std::runtime_error& e) {
             const std::string what = e.what();
@@ -465,6 +467,20 @@ TEST_F(Exporters, EmptyStoreGivesHeaderOnlyFrames) {
     EXPECT_NE(readFile(dir_ / "f.ply").find("element vertex 0\n"), std::string::npos);
     writeFrame(dir_ / "f.vtu", Format::Vtu, empty);
     EXPECT_NE(readFile(dir_ / "f.vtu").find("NumberOfPoints=\"0\""), std::string::npos);
+    writeFrame(dir_ / "f.obj", Format::Obj, empty, SurfaceMeshDef{0.02f, {}, 1});
+    EXPECT_EQ(readFile(dir_ / "f.obj"), "# tide: the fluid's surface, one object per material (m)\n");
+}
+
+// The surface mesh needs the particle spacing: without it nothing is written, and the error
+// names it.
+TEST_F(Exporters, ObjWithoutAParticleSpacingIsRefusedBeforeTheFileIsTouched) {
+    try {
+        writeFrame(dir_ / "f.obj", Format::Obj, particles_);
+        FAIL() << "wrote a surface mesh without a particle spacing";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("particle spacing 0 m"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(directoryEntries(dir_), std::vector<std::string>{});
 }
 
 TEST_F(Exporters, InconsistentArraysAreRejected) {

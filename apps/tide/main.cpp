@@ -18,9 +18,10 @@ int main(int argc, char** argv) {
     runApp->add_option("--end-time", run.endTime, "Simulated seconds, overriding the scene's end_time")
         ->check(CLI::PositiveNumber);
     runApp->add_option("--threads", run.threads, "Worker threads (0 = all cores)")->check(CLI::Range(0, 1024));
-    runApp->add_option("--format", run.formats, "Frame formats, comma separated: vtu, ply, csv (default: the scene's)")
+    runApp->add_option("--format", run.formats,
+                       "Frame formats, comma separated: vtu, ply, csv, obj (the fluid's surface mesh) (default: the scene's)")
         ->delimiter(',')
-        ->check(CLI::IsMember({"vtu", "ply", "csv"}));
+        ->check(CLI::IsMember({"vtu", "ply", "csv", "obj"}));
     runApp->add_option("--solver", run.solver, "Solver, overriding the scene's solver.method");
     runApp->add_flag("--force", run.force, "Write into a folder that holds another run, replacing its frames");
     runApp->add_flag("--quiet", run.quiet, "No progress output");

@@ -12,7 +12,7 @@ namespace {
 /// What `tide run` and `tide render` write: frames (and rendered images), the series file,
 /// stats, gauges and probes, checkpoints. --force replaces these and nothing else.
 bool isFinishedOutput(const std::string& name) {
-    static const std::regex frame(R"(frame_\d{5,}\.(vtu|ply|csv|png))");
+    static const std::regex frame(R"(frame_\d{5,}\.(vtu|ply|csv|obj|png))");
     static const std::regex checkpoint(R"(checkpoint_\d{5,}\.tidecp)");
     return name == "frames.pvd" || name == "stats.json" || name == "gauges.csv" || name == "probes.csv" ||
            std::regex_match(name, frame) || std::regex_match(name, checkpoint);

@@ -231,6 +231,8 @@ int runCommand(const RunOptions& o) {
     bool reportedFull = false;
     Measurements measurements(scene);
     measurements.restoreRows(done.gaugeRows, done.probeRows);
+    io::SurfaceMeshDef surface{scene.world.particleSpacing, {}, scene.world.threads};  // the obj format's
+    for (const MaterialDef& m : scene.materials) surface.materialNames.push_back(m.name);
     int lastFrame = firstFrame - 1;
     try {
         for (int frame = firstFrame; frame <= frames; ++frame) {
@@ -243,7 +245,7 @@ int runCommand(const RunOptions& o) {
                 });
             }
             for (io::Format format : scene.output.formats)
-                io::writeFrame(dir / frameName(frame, format), format, world->particles());
+                io::writeFrame(dir / frameName(frame, format), format, world->particles(), surface);
             if (vtu) {
                 pvd.add(frame / scene.output.fps, frameName(frame, io::Format::Vtu));
                 pvd.write();

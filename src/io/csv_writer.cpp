@@ -1,23 +1,9 @@
 // CSV particle frames: a fixed header, then one row per particle.
-#include <charconv>
 #include <string>
-#include <system_error>
 
 #include "io/frame_writers.hpp"
 
 namespace tide::io::detail {
-
-namespace {
-
-/// Appends the shortest decimal form that reads back as exactly `value`.
-template <class T>
-void appendNumber(std::string& line, T value) {
-    char text[32];
-    const auto [end, ec] = std::to_chars(text, text + sizeof text, value);
-    if (ec == std::errc{}) line.append(text, end);
-}
-
-}  // namespace
 
 void writeCsv(std::ostream& out, const ParticleStore& particles) {
     // The header is a contract with downstream tools: do not add columns.

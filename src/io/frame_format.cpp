@@ -12,6 +12,7 @@ std::optional<Format> parseFormat(std::string_view name) {
     if (name == "vtu") return Format::Vtu;
     if (name == "ply") return Format::Ply;
     if (name == "csv") return Format::Csv;
+    if (name == "obj") return Format::Obj;
     return std::nullopt;
 }
 
@@ -20,11 +21,13 @@ std::string_view extension(Format format) {
         case Format::Vtu: return "vtu";
         case Format::Ply: return "ply";
         case Format::Csv: return "csv";
+        case Format::Obj: return "obj";
     }
     return "";
 }
 
-void writeFrame(const std::filesystem::path& file, Format format, const ParticleStore& particles) {
+void writeFrame(const std::filesystem::path& file, Format format, const ParticleStore& particles,
+                const SurfaceMeshDef& surface) {
     const std::size_t n = particles.position.size();
     if (particles.velocity.size() != n || particles.density.size() != n || particles.pressure.size() != n ||
         particles.material.size() != n || particles.id.size() != n || particles.concentration.size() != n) {
@@ -42,6 +45,11 @@ void writeFrame(const std::filesystem::path& file, Format format, const Particle
         case Format::Csv:
             writeFileAtomically(file, [&](std::ostream& out) { detail::writeCsv(out, particles); });
             return;
+        case Format::Obj: {
+            const SurfaceMesh mesh = buildSurfaceMesh(particles, surface);  // before the file is touched
+            writeFileAtomically(file, [&](std::ostream& out) { writeObj(out, mesh); });
+            return;
+        }
     }
     throw std::invalid_argument("tide::io::writeFrame: unknown format");
 }

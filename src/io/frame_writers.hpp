@@ -5,9 +5,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <charconv>
 #include <cstddef>
 #include <cstring>
 #include <ostream>
+#include <string>
+#include <system_error>
 #include <type_traits>
 #include <vector>
 
@@ -21,6 +24,14 @@ void writeCsv(std::ostream& out, const ParticleStore& particles);
 void writePly(std::ostream& out, const ParticleStore& particles);
 /// Writes a frame as a VTK XML UnstructuredGrid with raw appended data, one VTK_VERTEX cell per point.
 void writeVtu(std::ostream& out, const ParticleStore& particles);
+
+/// Appends the shortest decimal form that reads back as exactly `value` (the text formats).
+template <class T>
+void appendNumber(std::string& line, T value) {
+    char text[32];
+    const auto [end, ec] = std::to_chars(text, text + sizeof text, value);
+    if (ec == std::errc{}) line.append(text, end);
+}
 
 /// Buffers trivially copyable values as little-endian bytes and writes them to a stream in
 /// large blocks. Call flush() at the end: the destructor does not.

@@ -933,7 +933,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
             for (std::size_t i = 0; i < formats.size(); ++i) {
                 const std::string path = indexed("output.formats", i);
                 const auto f = formats[i].is_string() ? parseFormat(formats[i].get<std::string>()) : std::nullopt;
-                if (!f) r.fail(path, "must be \"vtu\", \"ply\" or \"csv\", got " + show(formats[i]));
+                if (!f) r.fail(path, "must be \"vtu\", \"ply\", \"csv\" or \"obj\", got " + show(formats[i]));
                 else if (std::find(scene.output.formats.begin(), scene.output.formats.end(), *f) == scene.output.formats.end())
                     scene.output.formats.push_back(*f);
             }

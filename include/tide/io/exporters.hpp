@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Particle-frame exporters (VTU, PLY, CSV), ParaView time series (.pvd), and the atomic
-/// file writing they all go through.
+/// Particle-frame exporters (VTU, PLY, CSV), the fluid's surface mesh (OBJ), ParaView time
+/// series (.pvd), and the atomic file writing they all go through.
 
 #include <filesystem>
 #include <functional>
@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include <tide/io/surface_mesh.hpp>
 #include <tide/particles.hpp>
 
 namespace tide::io {
@@ -20,12 +21,13 @@ enum class Format {
     Vtu,  ///< VTK XML UnstructuredGrid, raw appended binary data (ParaView, meshio)
     Ply,  ///< binary little-endian PLY point cloud
     Csv,  ///< comma-separated text, one row per particle
+    Obj,  ///< Wavefront OBJ: the fluid's surface as triangles, one object per material (surface_mesh.hpp)
 };
 
-/// The format named "vtu", "ply" or "csv" (exact, lowercase); std::nullopt for anything else.
+/// The format named "vtu", "ply", "csv" or "obj" (exact, lowercase); std::nullopt for anything else.
 [[nodiscard]] std::optional<Format> parseFormat(std::string_view name);
 
-/// The file extension of a format, without the dot: "vtu", "ply" or "csv".
+/// The file extension of a format, without the dot: "vtu", "ply", "csv" or "obj".
 [[nodiscard]] std::string_view extension(Format format);
 
 /// Writes a file so that a reader never sees it half-written: `write` fills a temporary
@@ -37,9 +39,12 @@ void writeFileAtomically(const std::filesystem::path& file, const std::function<
 
 /// Writes one frame of particles to `file` atomically: per particle its position, velocity,
 /// density, pressure, material index and id (CSV has no id column: its header is the fixed
-/// `x,y,z,vx,vy,vz,density,pressure,material`). Throws std::runtime_error on failure, and
-/// std::invalid_argument if the particle arrays do not all have the same size.
-void writeFrame(const std::filesystem::path& file, Format format, const ParticleStore& particles);
+/// `x,y,z,vx,vy,vz,density,pressure,material`); for Format::Obj the surface mesh built with
+/// `surface` (whose particle spacing it needs). Throws std::runtime_error on failure, and
+/// std::invalid_argument if the particle arrays do not all have the same size or (obj) the
+/// particle spacing is not positive.
+void writeFrame(const std::filesystem::path& file, Format format, const ParticleStore& particles,
+                const SurfaceMeshDef& surface = {});
 
 /// A ParaView time series (.pvd collection) of frame files.
 class PvdWriter {
