@@ -42,6 +42,26 @@ bool closedAndConsistent(const SurfaceMesh& mesh, std::size_t first, std::size_t
     return !edges.empty();
 }
 
+/// Connected pieces of the triangles [first, first + count) (union-find over shared vertices).
+int pieces(const SurfaceMesh& mesh, std::size_t first, std::size_t count) {
+    std::vector<std::uint32_t> parent(mesh.vertices.size());
+    for (std::uint32_t v = 0; v < parent.size(); ++v) parent[v] = v;
+    auto root = [&](std::uint32_t v) {
+        while (parent[v] != v) v = parent[v] = parent[parent[v]];
+        return v;
+    };
+    for (std::size_t t = first; t < first + count; ++t)
+        for (int k = 1; k < 3; ++k) parent[root(mesh.triangles[t][k])] = root(mesh.triangles[t][0]);
+    std::vector<bool> seen(parent.size(), false);
+    int n = 0;
+    for (std::size_t t = first; t < first + count; ++t) {
+        const std::uint32_t r = root(mesh.triangles[t][0]);
+        if (!seen[r]) ++n;
+        seen[r] = true;
+    }
+    return n;
+}
+
 struct Bounds {
     glm::vec3 lo{1e30f}, hi{-1e30f};
 };
@@ -71,6 +91,7 @@ TEST_P(SurfaceMeshBlock, SurfaceLiesOnItsFaces) {
     ASSERT_EQ(mesh.objects.size(), 1u);
     EXPECT_EQ(mesh.objects[0].name, "water");
     EXPECT_TRUE(closedAndConsistent(mesh, 0, mesh.triangles.size()));
+    EXPECT_EQ(pieces(mesh, 0, mesh.triangles.size()), 1);  // no stray shell inside or out
     const double volume = enclosedVolume(mesh, 0, mesh.triangles.size());
     const double block = 0.2 * 0.1 * 0.16;
     const Bounds b = boundsOf(mesh);
@@ -114,6 +135,7 @@ TEST(SurfaceMesh, BallEnclosesItsParticlesVolume) {
     ASSERT_EQ(mesh.objects.size(), 1u);
     EXPECT_EQ(mesh.objects[0].name, "material_0");
     EXPECT_TRUE(closedAndConsistent(mesh, 0, mesh.triangles.size()));
+    EXPECT_EQ(pieces(mesh, 0, mesh.triangles.size()), 1);
     const double volume = enclosedVolume(mesh, 0, mesh.triangles.size());
     const double filled = static_cast<double>(p.position.size()) * s * s * s;
     double rMin = 1e30, rMax = 0.0;
@@ -143,6 +165,7 @@ TEST(SurfaceMesh, OneObjectPerMaterialInTheObjText) {
     EXPECT_EQ(mesh.objects[1].material, 2u);
     for (const SurfaceMesh::Object& o : mesh.objects) {
         EXPECT_TRUE(closedAndConsistent(mesh, o.firstTriangle, o.triangleCount)) << o.name;
+        EXPECT_EQ(pieces(mesh, o.firstTriangle, o.triangleCount), 1) << o.name;
         EXPECT_GT(enclosedVolume(mesh, o.firstTriangle, o.triangleCount), 0.0) << o.name;
         // Each object around its own block only.
         const float lo = o.material == 0 ? 0.0f : 0.2f, hi = o.material == 0 ? 0.1f : 0.3f;
@@ -216,6 +239,7 @@ TEST(SurfaceMesh, LoneParticleAndThinSheetShow) {
     const double cube = static_cast<double>(s) * s * s;
     for (const SurfaceMesh::Object& o : mesh.objects) {
         EXPECT_TRUE(closedAndConsistent(mesh, o.firstTriangle, o.triangleCount)) << o.name;
+        EXPECT_EQ(pieces(mesh, o.firstTriangle, o.triangleCount), 1) << o.name;
         const double perParticle = enclosedVolume(mesh, o.firstTriangle, o.triangleCount) / (o.material == 0 ? 1.0 : 100.0) / cube;
         std::printf("%s: %zu triangles, %.2f s^3 a particle\n", o.name.c_str(), o.triangleCount, perParticle);
         if (o.material == 0) {
