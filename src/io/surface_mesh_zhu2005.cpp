@@ -90,8 +90,8 @@ SurfaceMesh buildSurfaceMesh(const ParticleStore& particles, const SurfaceMeshDe
     const double spacing = def.particleSpacing;
     const double voxel = 0.5 * spacing;
     const double radius = kSphereRadius * spacing, erosion = kErosion * spacing;
-    // The narrow band holds the erosion and the filter's stencil (a wider one made the same
-    // surface, 25 % slower).
+    // The narrow band holds the erosion and the filter's stencil (4 voxels met the same tests
+    // 25 % slower).
     const float halfWidth = static_cast<float>(std::max(3.0, std::ceil(erosion / voxel) + 2.0));
 
     std::vector<ParticleList> lists;
