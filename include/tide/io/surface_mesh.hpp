@@ -4,10 +4,12 @@
 /// surface rather than points (Blender, Houdini): the `obj` frame format.
 ///
 /// Each particle is a sphere of one particle spacing; their union is a narrow-band level set
-/// (Zhu & Bridson 2005, "Animating sand as a fluid", §3.1, with a uniform radius), smoothed
-/// (mean-value filter) and eroded by half a spacing, so that the surface of a block of fluid
-/// lies where the block's faces are (half a spacing beyond its outer particles), then meshed
-/// at level zero. OpenVDB does each stage: ParticlesToLevelSet, LevelSetFilter, volumeToMesh.
+/// (Zhu & Bridson 2005, "Animating sand as a fluid", §3.1, with a uniform radius) on voxels of
+/// half a spacing, smoothed (two mean-value passes) and meshed 0.3 spacings inside its zero
+/// level, which puts a flat face of a block of fluid where the block's face is (half a spacing
+/// beyond its outer particles). A particle the smoothing leaves outside (a lone drop) keeps a
+/// bead of its own volume. OpenVDB does each stage: ParticlesToLevelSet, LevelSetFilter,
+/// csgUnion, volumeToMesh.
 
 #include <array>
 #include <cstdint>
