@@ -263,7 +263,7 @@ TEST(Cli, RunWritesEveryFormatAndStats) {
 
     // The surface mesh: one object named after the material, read by meshio as triangles
     // that enclose about the water's volume (250 particles of 2 cm: 2e-3 m³, less the rounded
-    // edges' ~7 %; measured 1.94e-3).
+    // edges' ~7 %; measured 1.95e-3).
     std::ifstream obj(out / "frame_00002.obj");
     std::string objects;
     while (std::getline(obj, line))

@@ -79,8 +79,8 @@ Bounds boundsOf(const SurfaceMesh& mesh) {
 
 // A block of particles: its surface is the block's faces, [0, 0.2] × [0, 0.1] × [0, 0.16],
 // with its edges rounded by the spheres and the smoothing to a radius of one spacing: the
-// volume is the block's less (1 − π/4) s² along each edge (measured: 4.93 % less at 2 cm,
-// 1.03 % at 1 cm; that model says 4.93 % and 1.23 %).
+// volume is the block's less (1 − π/4) s² along each edge (measured: 4.64 % less at 2 cm,
+// 0.89 % at 1 cm; that model says 4.93 % and 1.23 %).
 class SurfaceMeshBlock : public testing::TestWithParam<float> {};
 
 TEST_P(SurfaceMeshBlock, SurfaceLiesOnItsFaces) {
@@ -226,7 +226,7 @@ TEST(SurfaceMesh, NoParticlesNoObjects) {
 
 // A splash's lone particle and a sheet one particle thick keep a surface. The smoothing alone
 // dropped the lone particle (no triangles, measured): it gets a bead of its own volume, which
-// the half-spacing voxels mesh at 0.38 s³; the sheet is a film a spacing thick (0.83 s³ a
+// the half-spacing voxels mesh at 0.38 s³; the sheet is a film a spacing thick (0.85 s³ a
 // particle, its edges rounded).
 TEST(SurfaceMesh, LoneParticleAndThinSheetShow) {
     const float s = 0.02f;
