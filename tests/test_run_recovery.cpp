@@ -1,5 +1,5 @@
-// `tide run` survives being killed and refuses damaged checkpoints: SIGKILL at random moments
-// leaves only complete frames and --resume ends bit-identical to a clean run; flipped or cut
+// `tide run` survives being killed and refuses damaged checkpoints: SIGKILL mid-step and mid-write
+// (on events of the run, never on a clock) leaves only complete frames and --resume ends bit-identical to a clean run; flipped or cut
 // checkpoint bytes exit 2 touching nothing; an unstable scene stops naming step and particle.
 #include <fcntl.h>
 #include <signal.h>
@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
-#include <random>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -77,13 +76,33 @@ pid_t spawnTide(const std::vector<std::string>& args) {
     return pid;
 }
 
-/// Kills `pid` with SIGKILL after `delay` unless it ended first; returns whether it was killed.
-bool killAfter(pid_t pid, std::chrono::milliseconds delay) {
-    const auto deadline = std::chrono::steady_clock::now() + delay;
+/// A moment of a run to kill it at: when the file `name` appears in `dir` (the run renamed it
+/// into place), or, for `prefix`, while a temporary file starting with it is being written.
+struct KillEvent {
+    std::string name;    ///< a finished file, e.g. checkpoint_00003.tidecp
+    std::string prefix;  ///< a file being written, e.g. ".frame_00004" (empty: none)
+};
+
+/// Whether `event` has happened in `dir`.
+bool happened(const fs::path& dir, const KillEvent& event) {
+    std::error_code ec;
+    if (fs::exists(dir / event.name, ec)) return true;
+    if (event.prefix.empty()) return false;
+    for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+        if (it->path().filename().string().rfind(event.prefix, 0) == 0) return true;
+    return false;
+}
+
+/// Kills `pid` with SIGKILL as soon as `event` happens, unless the run ended first; returns
+/// whether it was killed. The moment depends on what the run does, not on a clock: a loaded
+/// machine slows the run and the watch alike. The watch polls without sleeping longer than a
+/// millisecond, and each event leaves at least two frames of work after it, so the run cannot
+/// end unseen.
+bool killOn(pid_t pid, const fs::path& dir, const KillEvent& event) {
     int status = 0;
-    while (std::chrono::steady_clock::now() < deadline) {
+    while (!happened(dir, event)) {
         if (waitpid(pid, &status, WNOHANG) == pid) return false;
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
     kill(pid, SIGKILL);
     waitpid(pid, &status, 0);
@@ -116,9 +135,13 @@ TEST(RunRecovery, KilledAtRandomMomentsResumesToTheCleanRunsFiles) {
     const CleanRun& clean = cleanRun();
     ASSERT_EQ(clean.files.count("frame_00008.vtu"), 1u);
     const fs::path out = scratch("recovery_killed");
-    std::mt19937 random(9);  // fixed: the same moments every run of the test
-    // Each session gets at most 30 % of a clean run: the fourth kill still finds work left.
-    std::uniform_real_distribution<double> fraction(0.1, 0.3);
+    // Four kills, each on an event of the run rather than after a delay: two just as a
+    // checkpoint lands (the run is then stepping), two while a frame's temporary file is being
+    // written (when that is too quick to catch, as the frame lands). Frames run to 8.
+    const std::vector<KillEvent> events{{"checkpoint_00001.tidecp", ""},
+                                        {"frame_00003.vtu", ".frame_00003"},
+                                        {"checkpoint_00005.tidecp", ""},
+                                        {"frame_00006.csv", ".frame_00006.csv"}};
     int kills = 0, sessions = 0, resumes = 0;
     bool finished = false;
     while (!finished && sessions < 12) {
@@ -134,8 +157,7 @@ TEST(RunRecovery, KilledAtRandomMomentsResumesToTheCleanRunsFiles) {
         ++sessions;
         const pid_t pid = spawnTide(args);
         ASSERT_GT(pid, 0);
-        const auto delay = std::chrono::milliseconds(static_cast<int>(1000.0 * clean.seconds * fraction(random)));
-        if (kills < 4 && killAfter(pid, delay)) {
+        if (kills < static_cast<int>(events.size()) && killOn(pid, out, events[kills])) {
             ++kills;
             // Only complete frames: each one present is byte for byte the clean run's.
             for (const auto& [name, bytes] : visibleFiles(out)) {
@@ -152,8 +174,8 @@ TEST(RunRecovery, KilledAtRandomMomentsResumesToTheCleanRunsFiles) {
     }
     ASSERT_TRUE(finished);
     std::printf("%d sessions, %d killed, %d resumed (clean run %.2f s)\n", sessions, kills, resumes, clean.seconds);
-    EXPECT_GE(resumes, 2) << "too few kills came after the first checkpoint";
-    EXPECT_GE(kills, 3) << "the run ended before it could be killed often enough";
+    EXPECT_EQ(kills, 4) << "a run ended before its kill event was seen";
+    EXPECT_EQ(resumes, 4);
     std::map<std::string, std::string> resumed = visibleFiles(out);
     resumed.erase("stats.json");
     for (auto it = resumed.begin(); it != resumed.end();)  // the last two checkpoints stay

@@ -75,10 +75,11 @@ World smallTank(bool emitter) {
     return world;
 }
 
-/// Fetches snapshots until `done` holds of one (true) or 20 s pass (false).
+/// Fetches snapshots until `done` holds of one (true) or 120 s pass (false: a hang, not a
+/// slow machine).
 bool waitFor(view::SimulationRunner& runner, render::Snapshot& s, view::RunnerStatus& status,
              const std::function<bool()>& done) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     while (std::chrono::steady_clock::now() < deadline) {
         runner.fetch(s, status);
         if (done()) return true;

@@ -100,12 +100,14 @@ def main():
             while distinct_colours(first) < 100 and time.monotonic() < deadline:
                 time.sleep(0.5)
                 first = region(screenshot(display), 0, WIDTH, 0, HEIGHT)
-            # A second later the fluid has moved (a few more tries when frames come slowly).
+            # Later the fluid has moved: wait for the change itself (frames come slowly on a
+            # loaded machine), with a deadline only against a hang.
             scene_part = lambda shot: [row[4 * PANEL_RIGHT:] for row in shot]
-            for _ in range(5):
+            deadline = time.monotonic() + 60
+            while True:
                 time.sleep(1)
                 second = region(screenshot(display), 0, WIDTH, 0, HEIGHT)
-                if changed_fraction(scene_part(first), scene_part(second)) >= 0.001:
+                if changed_fraction(scene_part(first), scene_part(second)) >= 0.001 or time.monotonic() > deadline:
                     break
             sent = time.monotonic()
             view.send_signal(signal.SIGTERM)
@@ -127,7 +129,7 @@ def main():
             if colours < 100:
                 fail(f"the window looks blank: {colours} distinct colours")
             if whole <= 0.0 or fluid < 0.001:
-                fail("the picture did not change between two screenshots a second apart")
+                fail("the picture did not change in 60 s")
 
             started = time.monotonic()
             quick = subprocess.run(command + ["--exit-after", "2"], env=env, cwd=tmp, capture_output=True, timeout=60)
