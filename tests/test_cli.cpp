@@ -1,6 +1,7 @@
 // The `tide` command line, run as a user would: bad scenes, output formats, progress, stats.
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -74,7 +75,9 @@ std::vector<BrokenScene> brokenScenes() {
         {"spacing missing", replace(ok, "\"particle_spacing\": 0.02,", ""), "particle_spacing"},
         {"spacing too fine for memory", replace(ok, "\"particle_spacing\": 0.02", "\"particle_spacing\": 0.00005"), "particle_spacing"},
         {"end time negative", replace(ok, "\"end_time\": 0.1", "\"end_time\": -1"), "end_time"},
-        {"number beyond double", replace(ok, "\"end_time\": 0.1", "\"end_time\": 1e400"), "number 1e400 is out of range"},
+        {"number beyond double", replace(ok, "\"end_time\": 0.1", "\"end_time\": 1e400"), "end_time: number 1e400 is out of range"},
+        {"number beyond double in an array", replace(ok, "\"max\": [0.2, 0.2, 0.2]", "\"max\": [0.2, -1e999, 0.2]"),
+         "domain.max[1]: number -1e999 is out of range"},
         {"end time a string", replace(ok, "\"end_time\": 0.1", "\"end_time\": \"soon\""), "end_time"},
         {"end time short of a frame", replace(ok, "\"end_time\": 0.1", "\"end_time\": 0.04"),
          "end_time: 0.04 s is shorter than one frame at output.fps 20 (0.05 s)"},
@@ -92,6 +95,13 @@ std::vector<BrokenScene> brokenScenes() {
         {"block min above max", replace(ok, "\"max\": [0.1, 0.1, 0.2]", "\"max\": [0.1, -0.1, 0.2]"), "blocks[0].max"},
         {"block velocity two numbers", replace(ok, "\"material\": \"water\"}]", "\"material\": \"water\", \"velocity\": [1, 2]}]"), "blocks[0].velocity"},
         {"blocks not an array", replace(ok, R"([{"min": [0, 0, 0], "max": [0.1, 0.1, 0.2], "material": "water"}])", "{}"), "blocks"},
+        {"obstacle name with a comma", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.05, 0.1], "radius": 0.02, "name": "a,b"}])"),
+         "obstacles[0].name: must be letters, digits, _ or -"},
+        {"obstacle name twice", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.05, 0.1], "radius": 0.02},
+            {"type": "sphere", "center": [0.15, 0.15, 0.1], "radius": 0.02, "name": "obstacle0"}])"),
+         "obstacles[1].name: \"obstacle0\" is already the name of obstacles[0]"},
+        {"load reference two numbers", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.05, 0.1], "radius": 0.02, "load_reference": [0, 1]}])"),
+         "obstacles[0].load_reference"},
         {"unknown solver", smallScene(R"(, "solver": {"method": "dfsph-ultra"})"), "solver.method"},
         {"unknown solver key", smallScene(R"(, "solver": {"methd": "classic"})"), "solver.methd"},
         {"unknown kernel", smallScene(R"(, "solver": {"kernel": "gaussian"})"), "solver.kernel"},
@@ -475,6 +485,49 @@ TEST(Cli, WaveGaugesAndProbesAreWrittenAsCsv) {
     while (std::getline(probes, line)) ++rows;
     EXPECT_EQ(rows, 3);
     expectFullStats(out);
+}
+
+// forces.csv (a contract): time, then each obstacle's force and moment under its name, then
+// the wave maker's and the walls'; one row per frame, each the mean load over its frame.
+TEST(Cli, LoadsOnObstaclesWallsAndPaddlesAreWrittenAsForcesCsv) {
+    const std::string scene = R"({
+  "name": "loads", "domain": {"min": [0, 0, 0], "max": [0.8, 0.3, 0.12], "periodic": [false, false, true]},
+  "particle_spacing": 0.03, "end_time": 0.2,
+  "materials": [{"name": "water", "density": 1000}],
+  "wavemaker": {"type": "piston", "x": 0.1, "depth": 0.15, "wave_height": 0.02, "period": 0.8, "ramp_time": 0.4},
+  "obstacles": [{"type": "box", "min": [0.5, 0, 0], "max": [0.56, 0.09, 0.12], "name": "step"},
+                {"type": "cylinder", "center": [0.7, 0.15, 0.06], "axis": [0, 1, 0], "radius": 0.03, "length": 0.3}],
+  "blocks": [{"min": [0.1, 0, 0], "max": [0.8, 0.15, 0.12]}],
+  "output": {"fps": 10, "formats": ["csv"]}
+}
+)";
+    const fs::path out = scratch("loads_out");
+    const Result r = run(kTide + " run " + writeScene("loads", scene).string() + " --quiet --force --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    std::ifstream forces(out / "forces.csv");
+    std::string header;
+    std::getline(forces, header);
+    EXPECT_EQ(header.rfind("time,step_fx,step_fy,step_fz,step_mx,step_my,step_mz,obstacle1_fx,obstacle1_fy,obstacle1_fz,"
+                           "obstacle1_mx,obstacle1_my,obstacle1_mz,wavemaker0_fx,",
+                           0),
+              0u)
+        << header;
+    // Walls across z are periodic: none there.
+    EXPECT_NE(header.find(",wall_ymin_fy,"), std::string::npos) << header;
+    EXPECT_EQ(header.find("wall_zmin"), std::string::npos) << header;
+    std::vector<std::vector<double>> rows;
+    for (std::string line; std::getline(forces, line);) {
+        std::vector<double> row;
+        std::stringstream cells(line);
+        for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
+        rows.push_back(row);
+    }
+    ASSERT_EQ(rows.size(), 3u);  // t = 0, 0.1, 0.2
+    const std::size_t columns = static_cast<std::size_t>(std::count(header.begin(), header.end(), ',')) + 1;
+    for (const auto& row : rows) EXPECT_EQ(row.size(), columns);
+    // Water 0.15 m deep pushes the step (0.09 m tall) down and the floor carries most of the weight.
+    EXPECT_LT(rows[2][2], 0.0);
+    EXPECT_NEAR(rows[1][0], 0.1, 1e-12);
 }
 
 TEST(Cli, ShippedScenesValidate) {

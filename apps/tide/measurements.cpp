@@ -22,9 +22,40 @@ void append(std::string& line, double value) {
 void append(std::string& line, float value) { append(line, std::isfinite(value) ? static_cast<double>(value) : NAN); }
 }  // namespace
 
-Measurements::Measurements(const io::Scene& scene) : gauges_(scene.gauges), probes_(scene.probes) {}
+Measurements::Measurements(const io::Scene& scene) : gauges_(scene.gauges), probes_(scene.probes), loads_(scene.world.loads) {}
 
-void Measurements::sample(const World& world, double t) {
+void Measurements::sample(World& world, double t) {
+    if (loads_) {
+        if (solids_.empty()) {
+            // Obstacles first (the contract), then wave makers, then the walls that exist.
+            const std::vector<SolidInfo>& solids = world.solids();
+            for (const SolidInfo::Kind kind : {SolidInfo::Kind::Obstacle, SolidInfo::Kind::WaveMaker, SolidInfo::Kind::Wall})
+                for (std::uint32_t s = 0; s < solids.size(); ++s) {
+                    if (solids[s].kind != kind) continue;
+                    if (kind == SolidInfo::Kind::Wall) {
+                        const int axis = static_cast<int>(solids[s].index / 2);
+                        if (!world.def().walls || world.def().periodic[axis]) continue;
+                    }
+                    solids_.push_back(s);
+                    solidNames_.push_back(solids[s].name);
+                }
+        }
+        const std::vector<SolidLoad> mean = world.takeMeanSolidLoads();
+        append(forceRows_, t);
+        for (const std::uint32_t s : solids_) {
+            const glm::dvec3 f = mean[s].force();
+            for (const double value : {f.x, f.y, f.z, mean[s].moment.x, mean[s].moment.y, mean[s].moment.z}) {
+                forceRows_ += ',';
+                append(forceRows_, value);
+            }
+        }
+        for (const std::uint32_t s : solids_)
+            for (int axis = 0; axis < 3; ++axis) {
+                forceRows_ += ',';
+                append(forceRows_, mean[s].pressureForce[axis]);
+            }
+        forceRows_ += '\n';
+    }
     if (!gauges_.empty()) {
         append(gaugeRows_, t);
         for (const io::GaugeDef& g : gauges_) {
@@ -47,6 +78,15 @@ void Measurements::sample(const World& world, double t) {
 }
 
 void Measurements::write(const std::filesystem::path& dir) const {
+    if (loads_ && !solids_.empty())
+        io::writeFileAtomically(dir / "forces.csv", [&](std::ostream& out) {
+            out << "time";
+            for (const std::string& name : solidNames_)
+                for (const char* column : {"_fx", "_fy", "_fz", "_mx", "_my", "_mz"}) out << ',' << name << column;
+            for (const std::string& name : solidNames_)
+                for (const char* column : {"_fx_p", "_fy_p", "_fz_p"}) out << ',' << name << column;
+            out << '\n' << forceRows_;
+        });
     if (!gauges_.empty())
         io::writeFileAtomically(dir / "gauges.csv", [&](std::ostream& out) {
             out << "time";

@@ -230,7 +230,7 @@ int runCommand(const RunOptions& o) {
     std::uint32_t lost = done.lost;
     bool reportedFull = false;
     Measurements measurements(scene);
-    measurements.restoreRows(done.gaugeRows, done.probeRows);
+    measurements.restoreRows(done.gaugeRows, done.probeRows, done.forceRows);
     io::SurfaceMeshDef surface{scene.world.particleSpacing, {}, scene.world.threads};  // the obj format's
     for (const MaterialDef& m : scene.materials) surface.materialNames.push_back(m.name);
     int lastFrame = firstFrame - 1;
@@ -266,6 +266,7 @@ int runCommand(const RunOptions& o) {
                                       wallSoFar(),
                                       measurements.gaugeRows(),
                                       measurements.probeRows(),
+                                      measurements.forceRows(),
                                       crc,
                                       scene.world.solver.method,
                                       checkpointEvery,

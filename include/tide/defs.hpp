@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -174,6 +175,9 @@ struct WorldDef {
     std::uint32_t capacity = 1u << 22;      ///< most particles the world may hold
     int threads = 0;                        ///< worker threads; 0 = all cores
     int reorderInterval = 25;               ///< steps between re-sorting particles by grid cell
+    /// Record the load the fluid puts on every solid each step (World::solidLoads): a few per
+    /// cent of a step where much fluid touches solids; off, none is computed.
+    bool loads = true;
     SolverDef solver;
 };
 
@@ -237,6 +241,13 @@ struct ObstacleDef {
     std::shared_ptr<const TriangleMesh> mesh;  ///< the mesh (shared, immutable), in metres
     /// How it moves (not a plane); the fields above describe its rest pose.
     MotionDef motion;
+    /// What its loads are called (World::solids, forces.csv columns); empty: "obstacle<k>",
+    /// k its index among the obstacles. Unique among the world's solids.
+    std::string name;
+    /// The point its moment is taken about, in the rest pose (it moves with the obstacle);
+    /// unset: the shape's centre (box, sphere and cylinder centre, the plane's point, the
+    /// centre of the mesh's bounding box).
+    std::optional<glm::vec3> loadReference;
 };
 
 /// A box filled with particles on a cubic lattice.

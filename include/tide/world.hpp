@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
 
 #include <tide/defs.hpp>
 #include <tide/particles.hpp>
@@ -142,6 +143,30 @@ struct ObstaclePose {
     glm::vec3 translation{0.0f};  ///< m
 };
 
+/// A solid the fluid can load: a face of the container, an obstacle or a wave paddle.
+struct SolidInfo {
+    enum class Kind { Wall, Obstacle, WaveMaker };
+    Kind kind = Kind::Wall;
+    /// Walls: the face, 2·axis + 1 on the max side (0 is −x, 3 is +y the lid, 4 is −z);
+    /// obstacles and wave makers: their index among them.
+    std::uint32_t index = 0;
+    /// "wall_xmin", "wall_xmax", "wall_ymin" (the floor) … "wall_zmax"; the obstacle's name
+    /// (ObstacleDef::name); "wavemaker<k>".
+    std::string name;
+};
+
+/// The load the fluid puts on one solid: the reaction of the pressure and viscous forces the
+/// solver applied to the fluid through the solid's boundary particles, pair by pair (all of a
+/// step's pressure solves, e.g. dfsph's density and divergence solves), in N and N·m.
+struct SolidLoad {
+    glm::dvec3 pressureForce{0.0};
+    glm::dvec3 viscousForce{0.0};  ///< viscosity and adhesion
+    /// Of both, about the solid's reference point (ObstacleDef::loadReference; a wall face's
+    /// centre; a paddle's boundary particles' centroid), summing (x_b − reference) × f_b.
+    glm::dvec3 moment{0.0};
+    [[nodiscard]] glm::dvec3 force() const { return pressureForce + viscousForce; }
+};
+
 /// What an emitter has accumulated during a run (its EmitterDef is the scene's).
 struct EmitterProgress {
     bool active = true;
@@ -237,6 +262,18 @@ public:
     [[nodiscard]] float surfaceHeight(float x, float z) const;
     /// Density, pressure and velocity interpolated at a point (Shepard-normalised SPH sum).
     [[nodiscard]] ProbeSample probe(const glm::vec3& point) const;
+    /// Every solid the fluid can load, in the order of solidLoads(): the container's six faces
+    /// (those a periodic axis or WorldDef::walls = false leaves out carry no load), then
+    /// wave makers and obstacles in the order they were added.
+    [[nodiscard]] const std::vector<SolidInfo>& solids() const;
+    /// The index in solids() of the solid called `name`, or none.
+    [[nodiscard]] std::optional<std::uint32_t> findSolid(const std::string& name) const;
+    /// Each solid's load over the last step (zero before the first, or with WorldDef::loads off).
+    [[nodiscard]] const std::vector<SolidLoad>& solidLoads() const;
+    /// Each solid's load averaged over the time stepped since the last call (the momentum it
+    /// exchanged with the fluid, divided by that time), and starts a new average. Zero when
+    /// no time was stepped.
+    std::vector<SolidLoad> takeMeanSolidLoads();
     /// Σ of the fluid particles' masses, kg.
     [[nodiscard]] double totalMass() const;
 

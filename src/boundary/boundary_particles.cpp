@@ -48,10 +48,30 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
     // the fluid 2.5 to 1 in the 50k benchmark dam break).
     const auto inside = [](const std::vector<bool>& in) { return static_cast<std::size_t>(std::count(in.begin(), in.end(), true)); };
     position.reserve(xs.size() * ys.size() * zs.size() - inside(inX) * inside(inY) * inside(inZ));
+    solid.clear();
+    solid.reserve(position.capacity());
     for (std::size_t k = 0; k < zs.size(); ++k)
         for (std::size_t j = 0; j < ys.size(); ++j)
             for (std::size_t i = 0; i < xs.size(); ++i)
-                if (!(inX[i] && inY[j] && inZ[k])) position.emplace_back(xs[i], ys[j], zs[k]);
+                if (!(inX[i] && inY[j] && inZ[k])) {
+                    const glm::vec3 x(xs[i], ys[j], zs[k]);
+                    position.push_back(x);
+                    // Which face: the axis it lies most layers outside along (x, z, y on ties).
+                    const std::size_t index[3] = {i, j, k};
+                    const std::size_t count[3] = {xs.size(), ys.size(), zs.size()};
+                    std::uint16_t face = kWallFace;
+                    std::size_t deepest = 0;
+                    for (const int axis : {0, 2, 1}) {
+                        const std::size_t beyond = static_cast<std::size_t>(layersAlong(axis));
+                        const std::size_t n = index[axis];
+                        const std::size_t depth = n < beyond ? beyond - n : (n + beyond >= count[axis] ? n + beyond + 1 - count[axis] : 0);
+                        if (depth > deepest) {
+                            deepest = depth;
+                            face = static_cast<std::uint16_t>(kWallFace + 2 * axis + (n >= beyond ? 1 : 0));
+                        }
+                    }
+                    solid.push_back(face);
+                }
     volume = particleVolume;
     velocity.assign(moving ? position.size() : 0, glm::vec3(0.0f));
     acceleration.assign(moving ? position.size() : 0, glm::vec3(0.0f));
@@ -60,11 +80,12 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
 }
 
 std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float particleVolume, float minSeparation,
-                                     float searchRadius, int threads) {
+                                     float searchRadius, int threads, std::uint16_t solidIndex) {
     setVolume(particleVolume);
     // Moving particles are elsewhere soon: fixed points are checked against fixed particles only.
     std::vector<std::uint8_t> keep(points.size(), 1);
     movable.resize(position.size(), 0);  // positions set by hand are fixed
+    solid.resize(position.size(), 0);    // and count towards solid 0
     if (!position.empty())
         parallelFor(static_cast<std::uint32_t>(points.size()), threads,
                     [&](std::uint32_t i) { keep[i] = !anyCloserThan(points[i], minSeparation, true); });
@@ -76,6 +97,7 @@ std::uint32_t BoundaryParticles::add(std::span<const glm::vec3> points, float pa
         acceleration.resize(position.size(), glm::vec3(0.0f));
     }
     movable.resize(position.size(), 0);
+    solid.resize(position.size(), solidIndex);
     grid.build(position, searchRadius, threads, periodic);
     return static_cast<std::uint32_t>(position.size() - before);
 }
@@ -105,8 +127,11 @@ bool BoundaryParticles::anyCloserThan(const glm::vec3& x, float radius, bool fix
     return found;
 }
 
-std::uint32_t BoundaryParticles::addMoving(std::span<const glm::vec3> points, float particleVolume) {
+std::uint32_t BoundaryParticles::addMoving(std::span<const glm::vec3> points, float particleVolume,
+                                           std::uint16_t solidIndex) {
     setVolume(particleVolume);
+    solid.resize(position.size(), 0);
+    solid.resize(position.size() + points.size(), solidIndex);
     const auto begin = static_cast<std::uint32_t>(position.size());
     position.insert(position.end(), points.begin(), points.end());
     velocity.resize(position.size(), glm::vec3(0.0f));

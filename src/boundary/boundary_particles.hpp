@@ -39,13 +39,14 @@ public:
     /// Points closer than `minSeparation` to an existing boundary particle are left out:
     /// where solids overlap (an obstacle and the wall shell, two obstacles) their union is
     /// sampled once, not twice. Returns how many were added.
+    /// They belong to solid `solidIndex` (see `solid`).
     std::uint32_t add(std::span<const glm::vec3> points, float volume, float minSeparation, float searchRadius,
-                      int threads);
+                      int threads, std::uint16_t solidIndex = 0);
 
     /// Add the particles of a moving boundary (a paddle, a moving obstacle), each of `volume`
     /// m³, all of them: they do not coincide with the fixed ones for long. Their positions are
     /// the World's to set every step. Returns the index of the first one.
-    std::uint32_t addMoving(std::span<const glm::vec3> points, float volume);
+    std::uint32_t addMoving(std::span<const glm::vec3> points, float volume, std::uint16_t solidIndex = 0);
 
     /// Whether a boundary particle lies closer than `radius` (at most the grid's cell size)
     /// to x; with `fixedOnly`, a fixed one. Reads the grid as last built.
@@ -63,6 +64,13 @@ public:
     std::vector<glm::vec3> velocity;      ///< v_b, m/s
     std::vector<glm::vec3> acceleration;  ///< a_b, m/s²
     bool moving = false;                  ///< whether any boundary particle moves
+    /// The solid each particle samples, whose load it counts towards (World::solidLoads): the
+    /// container shell's particles its faces, kWallFace + 2·axis (+1 on the max side), the
+    /// outermost distance deciding in edges and corners (ties to x, then z, then y: the side
+    /// walls own the floor's edges); added ones the index they were added with. Where solids
+    /// overlap, the one sampled first keeps the shared particles.
+    std::vector<std::uint16_t> solid;
+    static constexpr std::uint16_t kWallFace = 0;  ///< solid of the −x face; −y is 2, +z is 5
     std::vector<std::uint8_t> movable;    ///< 1 for particles of moving boundaries
     float maxSpeed = 0.0f;                ///< largest |v_b|, m/s (set with the velocities)
     UniformGrid grid;                 ///< rebuilt whenever boundary particles move

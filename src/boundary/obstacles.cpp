@@ -98,6 +98,18 @@ float signedDistance(const ObstacleDef& o, const RigidPose& pose, const glm::vec
     return d;
 }
 
+glm::vec3 shapeCentre(const ObstacleDef& obstacle) {
+    switch (obstacle.shape) {
+        case ObstacleDef::Shape::Box: return 0.5f * (obstacle.min + obstacle.max);
+        case ObstacleDef::Shape::Sphere:
+        case ObstacleDef::Shape::Cylinder: return obstacle.center;
+        case ObstacleDef::Shape::Plane: return obstacle.point;
+        case ObstacleDef::Shape::Mesh:
+            return obstacle.mesh ? 0.5f * (obstacle.mesh->boundsMin() + obstacle.mesh->boundsMax()) : glm::vec3(0.0f);
+    }
+    return glm::vec3(0.0f);
+}
+
 void obstacleBounds(const ObstacleDef& o, const glm::vec3& clipMin, const glm::vec3& clipMax, glm::vec3& lo,
                     glm::vec3& hi) {
     switch (o.shape) {

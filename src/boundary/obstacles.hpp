@@ -30,6 +30,10 @@ float signedDistance(const ObstacleDef& obstacle, const glm::vec3& x, glm::vec3*
 /// The same for an obstacle moved to `pose` (the normal rotated with it).
 float signedDistance(const ObstacleDef& obstacle, const RigidPose& pose, const glm::vec3& x, glm::vec3* normal = nullptr);
 
+/// The shape's centre in its rest pose: a box's, sphere's or cylinder's centre, the plane's
+/// point, the centre of a mesh's bounding box (where its loads' moments are taken by default).
+glm::vec3 shapeCentre(const ObstacleDef& obstacle);
+
 /// The obstacle's axis-aligned bounding box, clipped to [clipMin, clipMax] (a plane fills the clip box).
 void obstacleBounds(const ObstacleDef& obstacle, const glm::vec3& clipMin, const glm::vec3& clipMax, glm::vec3& lo,
                     glm::vec3& hi);

@@ -9,6 +9,7 @@
 #include <span>
 #include <stdexcept>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "boundary/boundary_particles.hpp"
@@ -24,6 +25,9 @@
 #include "core/periodic_box.hpp"
 #include "core/scratch_resize.hpp"
 #include "core/validate.hpp"
+#include "loads/contact_impulses.hpp"
+#include "loads/solid_loads.hpp"
+#include "loads/wall_loads.hpp"
 #include "neighbors/neighbor_list.hpp"
 #include "neighbors/uniform_grid.hpp"
 #include "solvers/diffusion_cleary1999.hpp"
@@ -174,6 +178,27 @@ struct World::Impl {
     glm::vec3 latticeOrigin;
     glm::vec3 wallsOrigin;  ///< latticeOrigin when the walls were sampled (wallPlanes)
     std::vector<DampingZoneDef> dampingZones;
+    /// Loads: the solids (six wall faces, then paddles and obstacles as added; their index is
+    /// BoundaryParticles::solid), each obstacle's reference point at rest, the pair forces of
+    /// the step, the last step's loads and the momentum exchanged since takeMeanSolidLoads().
+    std::vector<SolidInfo> solids;
+    std::vector<glm::vec3> obstacleReferences;
+    WallLoads wallLoads;
+    std::vector<SolidLoad> lastLoads;
+    std::vector<SolidLoad> loadImpulse;
+    double loadTime = 0.0;
+    ContactImpulses contacts;
+    std::vector<std::uint16_t> fixedObstacleSolids;  ///< the solid of each of fixedObstacles
+    [[nodiscard]] std::uint16_t solidOfObstacle(std::uint32_t index) const {
+        for (std::size_t s = 0; s < solids.size(); ++s)
+            if (solids[s].kind == SolidInfo::Kind::Obstacle && solids[s].index == index) return static_cast<std::uint16_t>(s);
+        return 0;
+    }
+    [[nodiscard]] std::uint16_t solidOfPaddle(std::uint32_t index) const {
+        for (std::size_t s = 0; s < solids.size(); ++s)
+            if (solids[s].kind == SolidInfo::Kind::WaveMaker && solids[s].index == index) return static_cast<std::uint16_t>(s);
+        return 0;
+    }
     double time = 0.0;
     float soundSpeed = 0.0f;  ///< resolved at the first step when SolverDef::soundSpeed is 0
     int stepsSinceReorder = 0;
@@ -189,10 +214,61 @@ struct World::Impl {
           latticeOrigin(d.domainMin), wallsOrigin(d.domainMin), soundSpeed(d.solver.soundSpeed) {
         boundary.periodic = periodic;
         if (def.walls) sampleWalls();
+        for (std::uint32_t face = 0; face < 6; ++face)
+            solids.push_back({SolidInfo::Kind::Wall, face, std::string("wall_") + "xyz"[face / 2] + (face % 2 ? "max" : "min")});
+    }
+
+    /// Each solid's reference point at time t (boundary particles where they are at t).
+    [[nodiscard]] std::vector<glm::dvec3> solidReferences(double t) const {
+        std::vector<glm::dvec3> refs(solids.size(), glm::dvec3(0.0));
+        const glm::vec3 lo = wallsMin(), hi = wallsMax();
+        for (std::size_t s = 0; s < solids.size(); ++s) {
+            const SolidInfo& solid = solids[s];
+            if (solid.kind == SolidInfo::Kind::Wall) {
+                glm::vec3 centre = 0.5f * (lo + hi);
+                const int axis = static_cast<int>(solid.index / 2);
+                centre[axis] = solid.index % 2 ? hi[axis] : lo[axis];
+                refs[s] = centre;
+            } else if (solid.kind == SolidInfo::Kind::Obstacle) {
+                const glm::vec3 rest = obstacleReferences[solid.index];
+                refs[s] = rest;
+                for (const Mover& m : movers)
+                    if (m.index == solid.index) {
+                        const RigidPose pose = m.motion.pose(t);
+                        refs[s] = pose.pivot + pose.rotation * (rest - pose.center);
+                    }
+            } else {
+                const Paddle& paddle = paddles[solid.index];
+                glm::dvec3 sum(0.0);
+                for (std::size_t k = 0; k < paddle.rest.size(); ++k) sum += glm::dvec3(boundary.position[paddle.begin + k]);
+                refs[s] = sum / std::max<double>(1.0, static_cast<double>(paddle.rest.size()));
+            }
+        }
+        return refs;
     }
 
     /// The container's walls, a shell as deep as the support, between wallsMin and wallsMax
     /// on the lattice as it is now.
+    /// The step's loads from the pairs the solver recorded (boundary particles where the step
+    /// started), added to the running average.
+    void sumLoads(double dt) {
+        sumSolidLoads(wallLoads, boundaryNeighbors, boundary, particles.size(), dt, solidReferences(time), periodic,
+                      threads, lastLoads);
+        loadImpulse.resize(solids.size());
+        for (std::size_t s = 0; s < solids.size(); ++s) {
+            loadImpulse[s].pressureForce += dt * lastLoads[s].pressureForce;
+            loadImpulse[s].viscousForce += dt * lastLoads[s].viscousForce;
+            loadImpulse[s].moment += dt * lastLoads[s].moment;
+        }
+        loadTime += dt;
+    }
+
+    void resetLoads() {
+        lastLoads.assign(solids.size(), SolidLoad{});
+        loadImpulse.assign(solids.size(), SolidLoad{});
+        loadTime = 0.0;
+    }
+
     void sampleWalls() {
         wallsOrigin = latticeOrigin;
         const int layers = static_cast<int>(std::ceil(h / def.particleSpacing));
@@ -617,18 +693,55 @@ void World::addObstacle(const ObstacleDef& def) {
     auto points = sampleObstacle(obstacle, w.latticeOrigin, w.def.particleSpacing, w.h, clipMin, clipMax, w.threads);
     for (glm::vec3& x : points) x = w.periodic.wrap(x);
     const auto index = static_cast<std::uint32_t>(w.obstacles.size());
+    if (obstacle.name.empty()) obstacle.name = "obstacle" + std::to_string(index);
+    if (findSolid(obstacle.name))
+        throw std::invalid_argument("obstacle.name: \"" + obstacle.name + "\" is taken by another solid; names must be unique");
+    if (obstacle.loadReference)
+        for (int axis = 0; axis < 3; ++axis) requireFinite("obstacle.load_reference", (*obstacle.loadReference)[axis]);
+    const auto solid = static_cast<std::uint16_t>(w.solids.size());
+    w.solids.push_back({SolidInfo::Kind::Obstacle, index, obstacle.name});
+    w.obstacleReferences.push_back(obstacle.loadReference ? *obstacle.loadReference : shapeCentre(obstacle));
     w.obstacles.push_back(obstacle);
     if (!moves) {
-        w.boundary.add(points, 1.0f / w.latticeSum, 0.5f * w.def.particleSpacing, w.h, w.threads);
+        w.boundary.add(points, 1.0f / w.latticeSum, 0.5f * w.def.particleSpacing, w.h, w.threads, solid);
         w.fixedObstacles.push_back(obstacle);
+        w.fixedObstacleSolids.push_back(solid);
         return;
     }
-    const std::uint32_t begin = w.boundary.addMoving(points, 1.0f / w.latticeSum);
+    const std::uint32_t begin = w.boundary.addMoving(points, 1.0f / w.latticeSum, solid);
     w.movers.push_back({index, RigidMotion(obstacle.motion), begin, std::move(points)});
     w.moveBoundaries(w.time);
 }
 
 const std::vector<ObstacleDef>& World::obstacles() const { return impl_->obstacles; }
+
+const std::vector<SolidInfo>& World::solids() const { return impl_->solids; }
+
+std::optional<std::uint32_t> World::findSolid(const std::string& name) const {
+    for (std::size_t s = 0; s < impl_->solids.size(); ++s)
+        if (impl_->solids[s].name == name) return static_cast<std::uint32_t>(s);
+    return std::nullopt;
+}
+
+const std::vector<SolidLoad>& World::solidLoads() const {
+    Impl& w = *impl_;
+    w.lastLoads.resize(w.solids.size());  // zero before the first step
+    return w.lastLoads;
+}
+
+std::vector<SolidLoad> World::takeMeanSolidLoads() {
+    Impl& w = *impl_;
+    std::vector<SolidLoad> mean(w.solids.size());
+    if (w.loadTime > 0.0)
+        for (std::size_t s = 0; s < std::min(mean.size(), w.loadImpulse.size()); ++s) {
+            mean[s].pressureForce = w.loadImpulse[s].pressureForce / w.loadTime;
+            mean[s].viscousForce = w.loadImpulse[s].viscousForce / w.loadTime;
+            mean[s].moment = w.loadImpulse[s].moment / w.loadTime;
+        }
+    w.loadImpulse.assign(w.solids.size(), SolidLoad{});
+    w.loadTime = 0.0;
+    return mean;
+}
 
 ObstaclePose World::obstaclePose(std::uint32_t index, double t) const {
     const Impl& w = *impl_;
@@ -700,7 +813,10 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     const int layers = static_cast<int>(std::ceil(w.h / d.particleSpacing));
     // Across the tank between the walls, on their lattice.
     std::vector<glm::vec3> rest = maker.sample(w.wallsMin(), w.wallsMax(), d.particleSpacing, layers);
-    const std::uint32_t begin = w.boundary.addMoving(rest, 1.0f / w.latticeSum);
+    const auto solid = static_cast<std::uint16_t>(w.solids.size());
+    w.solids.push_back({SolidInfo::Kind::WaveMaker, static_cast<std::uint32_t>(w.paddles.size()),
+                        "wavemaker" + std::to_string(w.paddles.size())});
+    const std::uint32_t begin = w.boundary.addMoving(rest, 1.0f / w.latticeSum, solid);
     w.paddles.push_back({std::move(maker), begin, std::move(rest)});
     w.moveBoundaries(w.time);
 }
@@ -787,7 +903,12 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     ctx.clock = &clock;
     w.pairTables.build(w.materials.size(), w.pairs);
     ctx.pairs = &w.pairTables;
+    if (w.def.loads) {
+        w.wallLoads.reset(w.boundaryNeighbors.slotCount());
+        ctx.loads = &w.wallLoads;
+    }
     const double dt = w.solver->step(ctx);
+    if (w.def.loads) w.sumLoads(dt);
     // Where the step ends: with the clock held (settle), where it started.
     const double end = held ? w.time : w.time + dt;
     // Dye spreads over this step's neighbour lists at the positions the solver moved to.
@@ -799,9 +920,15 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     w.stats.unconvergedSolves += ctx.pressureConverged ? 0 : 1;
     w.stats.recentUnconverged = (w.stats.recentUnconverged << 1) | (ctx.pressureConverged ? 0u : 1u);
     const float margin = w.solver->wallMargin() * w.def.particleSpacing;
+    // The projections below stop strays: the normal speed they take away is momentum the
+    // solid absorbs, part of its load (with loads on, each stage's change is booked to it).
+    const bool loads = w.def.loads;
+    if (loads) w.contacts.begin(w.particles, w.solidReferences(w.time), w.periodic);
     // Moving obstacles first: where one squeezes a particle against a wall, the wall wins.
-    for (const Impl::Mover& m : w.movers)
+    for (const Impl::Mover& m : w.movers) {
         projectOutOfMovingObstacle(w.obstacles[m.index], m.motion.pose(end), w.particles, margin, w.threads);
+        if (loads) w.contacts.book(w.particles, w.threads, [&](std::uint32_t, const glm::vec3&) { return w.solidOfObstacle(m.index); });
+    }
     if (w.def.walls) {
         // No walls across a periodic axis.
         constexpr float inf = std::numeric_limits<float>::infinity();
@@ -813,9 +940,31 @@ double World::Impl::step(double maxDt, Clock clockMode) {
             }
         const WallBox walls{lo, hi, margin, w.def.wallRestitution};
         walls.enforce(w.particles, w.threads);
+        // The face that pushed: along the largest change, the min face for a push towards +.
+        if (loads)
+            w.contacts.book(w.particles, w.threads, [](std::uint32_t, const glm::vec3& dv) {
+                const glm::vec3 a = glm::abs(dv);
+                const int axis = a.x >= a.y && a.x >= a.z ? 0 : (a.z >= a.y ? 2 : 1);
+                return static_cast<std::uint16_t>(BoundaryParticles::kWallFace + 2 * axis + (dv[axis] > 0.0f ? 0 : 1));
+            });
     }
-    projectOutOfObstacles(w.fixedObstacles, w.particles, margin, w.threads);
-    for (const Impl::Paddle& paddle : w.paddles) paddle.maker.project(end, w.particles, margin, w.threads);
+    if (!loads) {
+        projectOutOfObstacles(w.fixedObstacles, w.particles, margin, w.threads);
+    } else {
+        // One at a time (the same arithmetic: each particle meets them in the same order).
+        for (std::size_t k = 0; k < w.fixedObstacles.size(); ++k) {
+            projectOutOfObstacles(std::span(w.fixedObstacles).subspan(k, 1), w.particles, margin, w.threads);
+            w.contacts.book(w.particles, w.threads, [&](std::uint32_t, const glm::vec3&) { return w.fixedObstacleSolids[k]; });
+        }
+    }
+    for (const Impl::Paddle& paddle : w.paddles) {
+        paddle.maker.project(end, w.particles, margin, w.threads);
+        if (loads) {
+            const auto solid = w.solidOfPaddle(static_cast<std::uint32_t>(&paddle - w.paddles.data()));
+            w.contacts.book(w.particles, w.threads, [&](std::uint32_t, const glm::vec3&) { return solid; });
+        }
+    }
+    if (loads) w.contacts.finish(dt, w.lastLoads, w.loadImpulse);
     applyDampingZones(w.dampingZones, w.particles, dt, w.threads);
     if (w.periodic.any)
         parallelFor(w.particles.size(), w.threads, [&](std::uint32_t i) {
@@ -872,6 +1021,7 @@ SettleReport World::settle(double seconds, float quietSpeed) {
     report.maxSpeed = w.stats.maxSpeed;
     for (glm::vec3& v : w.particles.velocity) v = glm::vec3(0.0f);
     w.stats = WorldStats{};
+    w.resetLoads();
     return report;
 }
 
@@ -892,6 +1042,7 @@ void World::clear() {
     w.soundSpeed = w.def.solver.soundSpeed;
     w.stepsSinceReorder = 0;
     w.divergence.reset();
+    w.resetLoads();
 }
 
 const std::optional<Divergence>& World::divergence() const { return impl_->divergence; }
@@ -972,6 +1123,7 @@ void World::restoreState(WorldState state) {
         w.emitters[e].travelled = state.emitters[e].travelled;
     }
     w.divergence.reset();
+    w.resetLoads();  // a checkpoint is taken where the run starts a new average
     w.moveBoundaries(w.time);
 }
 

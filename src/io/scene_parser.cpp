@@ -13,6 +13,8 @@
 #include <tide/io/motion_table.hpp>
 #include <tide/io/scene.hpp>
 
+#include "json_error_path.hpp"
+
 namespace tide::io {
 
 namespace {
@@ -514,11 +516,11 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
     if (!type) return std::nullopt;
     ObstacleDef o;
     if (*type == "box") {
-        if (!r.object(j, path, {"type", "min", "max", "motion"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "min", "max", "motion", "name", "load_reference"})) return std::nullopt;
         if (!readBox(r, j, path, scale, o.min, o.max)) return std::nullopt;
         o.shape = ObstacleDef::Shape::Box;
     } else if (*type == "sphere") {
-        if (!r.object(j, path, {"type", "center", "radius", "motion"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "center", "radius", "motion", "name", "load_reference"})) return std::nullopt;
         const auto c = r.vec3(j, "center", path, true);
         const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
         if (!c || !radius) return std::nullopt;
@@ -526,7 +528,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.center = *c * scale;
         o.radius = static_cast<float>(*radius) * scale;
     } else if (*type == "cylinder") {
-        if (!r.object(j, path, {"type", "center", "axis", "radius", "length", "motion"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "center", "axis", "radius", "length", "motion", "name", "load_reference"})) return std::nullopt;
         const auto c = r.vec3(j, "center", path, true);
         const auto axis = readDirection(r, j, "axis", path);
         const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
@@ -538,7 +540,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.radius = static_cast<float>(*radius) * scale;
         o.length = static_cast<float>(*length) * scale;
     } else if (*type == "plane") {
-        if (!r.object(j, path, {"type", "point", "normal", "motion"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "point", "normal", "motion", "name", "load_reference"})) return std::nullopt;
         const auto point = r.vec3(j, "point", path, true);
         const auto normal = readDirection(r, j, "normal", path);
         if (!point || !normal) return std::nullopt;
@@ -546,7 +548,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.point = *point * scale;
         o.normal = *normal;
     } else if (*type == "mesh") {
-        if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate", "motion"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate", "motion", "name", "load_reference"})) return std::nullopt;
         const auto file = r.string(j, "file", path, true);
         MeshPlacement placement;
         const auto meshScale = readMeshScale(r, j, path);
@@ -580,6 +582,24 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         r.fail(join(path, "type"), "must be \"box\", \"sphere\", \"cylinder\", \"plane\" or \"mesh\", got \"" + *type +
                                        "\"" + suggestion(*type, kObstacleTypes));
         return std::nullopt;
+    }
+    if (j.contains("name")) {
+        const auto name = r.string(j, "name", path, false);
+        if (!name) return std::nullopt;
+        const bool plain = !name->empty() && std::all_of(name->begin(), name->end(), [](char c) {
+            return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-';
+        });
+        // It heads forces.csv's columns, beside the walls' and wave makers' own.
+        if (!plain || name->rfind("wall_", 0) == 0 || name->rfind("wavemaker", 0) == 0) {
+            r.fail(join(path, "name"), "must be letters, digits, _ or -, not starting with wall_ or wavemaker, got \"" + *name + "\"");
+            return std::nullopt;
+        }
+        o.name = *name;
+    }
+    if (j.contains("load_reference")) {
+        const auto point = r.vec3(j, "load_reference", path, false);
+        if (!point) return std::nullopt;
+        o.loadReference = *point * scale;
     }
     if (j.contains("motion")) {
         if (o.shape == ObstacleDef::Shape::Plane) {
@@ -804,7 +824,9 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
             }
         }
         std::ostringstream out;
-        out << source << ':' << line << ':' << column << ": number " << literal << " is out of range";
+        out << source << ':' << line << ':' << column << ": ";
+        if (const std::string path = jsonPathWhereParsingStops(text); !path.empty()) out << path << ": ";
+        out << "number " << literal << " is out of range (beyond double precision's 1.8e308)";
         throw SceneError({out.str()});
     }
 
@@ -875,6 +897,17 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     for (std::size_t i = 0; i < obstacles.size(); ++i)
         if (auto o = readObstacle(r, obstacles[i], indexed("obstacles", i), scale, baseDirectory))
             scene.obstacles.push_back(std::move(*o));
+    // Names head forces.csv's columns: one each, the unnamed ones' "obstacle<k>" included.
+    for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+        const auto nameOf = [&](std::size_t k) {
+            return scene.obstacles[k].name.empty() ? "obstacle" + std::to_string(k) : scene.obstacles[k].name;
+        };
+        for (std::size_t k = 0; k < i; ++k)
+            if (nameOf(k) == nameOf(i)) {
+                r.fail(indexed("obstacles", i) + ".name", "\"" + nameOf(i) + "\" is already the name of " + indexed("obstacles", k));
+                break;
+            }
+    }
 
     if (root.contains("wavemaker")) readWaveMaker(r, root["wavemaker"], scene, scale, domainOk);
     if (root.contains("damping")) readDamping(r, root["damping"], scene, scale);

@@ -68,14 +68,27 @@ void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
         }
         float wallViscosity = 0.0f;
         glm::vec3 wallDrive(0.0f);  // Σ_b V_b ∇²W_ib v_b, moving walls only
-        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+        const auto walls = ctx.boundaryNeighbors.of(i);
+        const std::uint64_t slot = ctx.loads ? ctx.boundaryNeighbors.offset(i) : 0;
+        // The force b puts on i: m_i/ρ_i times each term of the sums below.
+        const float toForce = p.mass[i] / p.density[i];
+        for (std::size_t k = 0; k < walls.size(); ++k) {
+            const std::uint32_t b = walls[k];
             const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
             const float r = glm::length(rib);
-            if (r > 0.0f) pressureSum += (ctx.boundary.volume * pi * -spiky.gradientScale(r) / r) * rib;
+            if (r > 0.0f) {
+                const glm::vec3 term = (ctx.boundary.volume * pi * -spiky.gradientScale(r) / r) * rib;
+                pressureSum += term;
+                if (ctx.loads) ctx.loads->pressureForce[slot + k] = toForce * term;
+            }
             if (!muller) continue;
             const float weight = ctx.boundary.volume * viscosity.laplacian(r);
             wallViscosity += weight;
             if (ctx.boundary.moving) wallDrive += weight * ctx.boundary.velocity[b];
+            if (ctx.loads) {
+                const glm::vec3 vb = ctx.boundary.moving ? ctx.boundary.velocity[b] : glm::vec3(0.0f);
+                ctx.loads->viscousForce[slot + k] = toForce * (2.0f * mui * weight) * (vb - vi);
+            }
         }
         if (!muller) {
             p.acceleration[i] += ctx.gravity + pressureSum / p.density[i];

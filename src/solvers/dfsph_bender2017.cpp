@@ -213,8 +213,27 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
                 wall = uniform ? pushed : wall + pushed / contrast_.scale(i);
             }
             p.velocity[i] -= dv + psi * wall;
+            if (ctx.loads) recordWallImpulses(ctx, i, psi, boundaryK);
         });
     });
+}
+
+void DfsphBender2017::recordWallImpulses(StepContext& ctx, std::uint32_t i, float psi, std::span<const float> boundaryK) const {
+    // Pair b's share of applyPressure's wall term, psi (k_i + k_b) g_ib with g_ib = V_b ∇W_ib
+    // (k_b = k_i mirrored; read through the density contrast's scale), as the impulse on i.
+    const ParticleStore& p = ctx.particles;
+    const glm::vec3 xi = p.position[i];
+    const auto walls = ctx.boundaryNeighbors.of(i);
+    const PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
+    glm::vec3* impulse = ctx.loads->pressureImpulse.data() + ctx.boundaryNeighbors.offset(i);
+    const float toImpulse = -p.mass[i] * psi;
+    const float scale = contrast_.uniform() ? 1.0f : 1.0f / contrast_.scale(i);
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+        const std::uint32_t b = walls[k];
+        const glm::vec3 g = (ctx.boundary.volume * wallF_.factor(f[k])) * ctx.delta(xi, ctx.boundary.position[b]);
+        const float kb = boundaryK.empty() ? k_[i] : scale * boundaryK[b];
+        impulse[k] += (toImpulse * (k_[i] + kb)) * g;
+    }
 }
 
 double DfsphBender2017::meanRelativeError(const StepContext& ctx, Solve solve) const {

@@ -86,6 +86,8 @@ private:
     /// v_i −= Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij + Σ_b Ψ_b ((k_i + k_b)/ρ_i) ∇W_ib for the
     /// current k_; boundary particles take `boundaryK`, or mirror k_i when it is empty.
     void applyPressure(StepContext& ctx, std::span<const float> boundaryK);
+    /// Adds each boundary pair's part of fluid particle i's last applyPressure to ctx.loads.
+    void recordWallImpulses(StepContext& ctx, std::uint32_t i, float psi, std::span<const float> boundaryK) const;
     /// κ̄_i = Σ_j m_j W_ij κ_j / Σ_j m_j W_ij over i and its fluid neighbours
     /// (SolverDef::differenceForm), into error_.
     void smoothKappa(StepContext& ctx);

@@ -141,9 +141,15 @@ void PcisphSolenthaler2009::computePressureAccel(StepContext& ctx) {
         // κ̃_b = p_b/ρ0_ref read as p_b/ρ0_i.
         const auto wallKappa = wall_.kappa();
         const float wallScale = 1.0f / contrast_.scale(i);
-        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+        // Every call overwrites the loads: the last one's accelerations are the step's.
+        const auto walls = ctx.boundaryNeighbors.of(i);
+        glm::vec3* loads = ctx.loads ? ctx.loads->pressureForce.data() + ctx.boundaryNeighbors.offset(i) : nullptr;
+        for (std::size_t k = 0; k < walls.size(); ++k) {
+            const std::uint32_t b = walls[k];
             const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
-            sum += (ctx.boundary.volume * (rho0 * pi + wallScale * wallKappa[b])) * w.gradient(rib, glm::length(rib));
+            const glm::vec3 term = (ctx.boundary.volume * (rho0 * pi + wallScale * wallKappa[b])) * w.gradient(rib, glm::length(rib));
+            sum += term;
+            if (loads) loads[k] = -mi * term;  // the force b puts on i
         }
         pressureAccel_[i] = -sum;
     });

@@ -18,6 +18,7 @@
 #include "core/material_pairs.hpp"
 #include "core/phase_clock.hpp"
 #include "core/periodic_box.hpp"
+#include "loads/wall_loads.hpp"
 #include "neighbors/neighbor_list.hpp"
 #include "solvers/viscosity.hpp"
 
@@ -50,6 +51,9 @@ struct StepContext {
     bool pressureConverged = true;
     PhaseClock* clock = nullptr;  ///< where a solver books the phases of its step (may be null)
     const MaterialPairs* pairs = nullptr;  ///< per-pair diffusivity and surface tension (may be null: none)
+    /// Where the solver records what each boundary particle applies to each fluid particle,
+    /// slot boundaryNeighbors.offset(i) + k (loads/wall_loads.hpp), or null: loads are off.
+    WallLoads* loads = nullptr;
     /// Fluid rows a solver keeps packed for the SIMD pair sums (solvers/pair_sums.hpp), current
     /// while it computes the non-pressure forces, or null: (x_j, m_j) and (v_j, 1/ρ_j); or,
     /// with several rest densities, (x_j, μ_j) as viscosityRows and (v_j, m_j/ρ_j).

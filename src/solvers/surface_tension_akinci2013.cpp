@@ -85,10 +85,15 @@ float addSurfaceTension(const StepContext& ctx, std::span<glm::vec3> accel) {
         if (mat.adhesion > 0.0f) {
             // Adhesion (eq. 6) as an acceleration: −β Ψ_b A(r) x̂_ib, Ψ_b = ρ0_a V_b.
             glm::vec3 wall(0.0f);
-            for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-                const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
+            const auto walls = ctx.boundaryNeighbors.of(i);
+            glm::vec3* loads = ctx.loads ? ctx.loads->viscousForce.data() + ctx.boundaryNeighbors.offset(i) : nullptr;
+            for (std::size_t k = 0; k < walls.size(); ++k) {
+                const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[walls[k]]);
                 const float r = glm::length(rib);
-                if (r > 0.0f) wall += (ctx.boundary.volume * adhesionKernel.value(r) / r) * rib;
+                if (!(r > 0.0f)) continue;
+                const glm::vec3 term = (ctx.boundary.volume * adhesionKernel.value(r) / r) * rib;
+                wall += term;
+                if (loads) loads[k] -= (p.mass[i] * mat.adhesion * mat.restDensity) * term;  // the force b puts on i
             }
             sum -= (mat.adhesion * mat.restDensity) * wall;
         }

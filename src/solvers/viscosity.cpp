@@ -74,14 +74,20 @@ void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
         // Walls, mirrored: m_b/ρ_b = Ψ_b/ρ_i = ρ0_i V_b/ρ_i and ν_ib = 2μ_i/(2ρ_i); v_b no-slip.
         if (mui > 0.0f) {
             glm::vec3 wallSum(0.0f);
-            for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+            const float scale = ctx.materials[p.material[i]].restDensity / p.density[i] * mui / p.density[i];
+            const auto walls = ctx.boundaryNeighbors.of(i);
+            glm::vec3* loads = ctx.loads ? ctx.loads->viscousForce.data() + ctx.boundaryNeighbors.offset(i) : nullptr;
+            for (std::size_t k = 0; k < walls.size(); ++k) {
+                const std::uint32_t b = walls[k];
                 const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
                 const float r = glm::length(rib);
                 const glm::vec3 vb = ctx.boundary.moving ? wallVelocity(vi, ctx.boundary.velocity[b]) : wallVelocity(vi);
                 const float vr = glm::dot(vi - vb, rib);
-                wallSum += (ctx.boundary.volume * vr / (r * r + 0.01f * h2)) * w.gradient(rib, r);
+                const glm::vec3 term = (ctx.boundary.volume * vr / (r * r + 0.01f * h2)) * w.gradient(rib, r);
+                wallSum += term;
+                if (loads) loads[k] += (p.mass[i] * 10.0f * scale) * term;  // the force b puts on i
             }
-            sum += (ctx.materials[p.material[i]].restDensity / p.density[i] * mui / p.density[i]) * wallSum;
+            sum += scale * wallSum;
         }
         accel[i] += 10.0f * sum;  // 2(d + 2), d = 3
     });
@@ -121,6 +127,17 @@ void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
         // Walls, mirrored: m_b = Ψ_b = ρ0_i V_b, ρ_b = ρ_i, μ_b = μ_i; v_b no-slip.
         if (mui > 0.0f) {
             const float scale = ctx.materials[p.material[i]].restDensity * 2.0f * mui / p.density[i];
+            if (ctx.loads) {  // the force b puts on i: m_i/ρ_i times its term of the sums below
+                const auto walls = ctx.boundaryNeighbors.of(i);
+                glm::vec3* loads = ctx.loads->viscousForce.data() + ctx.boundaryNeighbors.offset(i);
+                for (std::size_t k = 0; k < walls.size(); ++k) {
+                    const std::uint32_t b = walls[k];
+                    const float r = glm::length(ctx.delta(xi, ctx.boundary.position[b]));
+                    const glm::vec3 vb = ctx.boundary.moving ? wallVelocity(vi, ctx.boundary.velocity[b]) : wallVelocity(vi);
+                    loads[k] += (p.mass[i] / p.density[i] * scale * ctx.boundary.volume * r * w.derivative(r) /
+                                 (r * r + 0.01f * h2)) * (vi - vb);
+                }
+            }
             if (!ctx.boundary.moving) {
                 float wallWeight = 0.0f;
                 for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
@@ -158,6 +175,16 @@ void addMuller2003(const StepContext& ctx, std::span<glm::vec3> accel) {
         }
         // Walls, mirrored as in the classic pressure sum: m_b/ρ_b = V_b, μ_b = μ_i; v_b no-slip.
         if (mui > 0.0f) {
+            if (ctx.loads) {  // the force b puts on i: m_i/ρ_i times its term of the sums below
+                const auto walls = ctx.boundaryNeighbors.of(i);
+                glm::vec3* loads = ctx.loads->viscousForce.data() + ctx.boundaryNeighbors.offset(i);
+                for (std::size_t k = 0; k < walls.size(); ++k) {
+                    const std::uint32_t b = walls[k];
+                    const glm::vec3 vb = ctx.boundary.moving ? wallVelocity(vi, ctx.boundary.velocity[b]) : wallVelocity(vi);
+                    loads[k] += (p.mass[i] / p.density[i] * mui * ctx.boundary.volume *
+                                 viscosity.laplacian(glm::length(ctx.delta(xi, ctx.boundary.position[b])))) * (vb - vi);
+                }
+            }
             if (!ctx.boundary.moving) {
                 float wallWeight = 0.0f;
                 for (const std::uint32_t b : ctx.boundaryNeighbors.of(i))

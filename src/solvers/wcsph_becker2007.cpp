@@ -73,9 +73,14 @@ double WcsphBecker2007::step(StepContext& ctx) {
         // wall's κ̃_b is p_b/ρ0_ref, read as κ_b = κ̃_b ρ0_ref/ρ0_i for fluid i.
         const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
         const float wallScale = 1.0f / contrast_.scale(i);
-        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
+        const auto walls = ctx.boundaryNeighbors.of(i);
+        glm::vec3* loads = ctx.loads ? ctx.loads->pressureForce.data() + ctx.boundaryNeighbors.offset(i) : nullptr;
+        for (std::size_t k = 0; k < walls.size(); ++k) {
+            const std::uint32_t b = walls[k];
             const glm::vec3 rib = ctx.delta(xi, ctx.boundary.position[b]);
-            sum += (ctx.boundary.volume * psi * (kappa_[i] + wallScale * wallKappa[b])) * w.gradient(rib, glm::length(rib));
+            const glm::vec3 term = (ctx.boundary.volume * psi * (kappa_[i] + wallScale * wallKappa[b])) * w.gradient(rib, glm::length(rib));
+            sum += term;
+            if (loads) loads[k] = -mi * term;  // the force b puts on i
         }
         p.acceleration[i] = accel_[i] - sum;
     });

@@ -1,0 +1,82 @@
+#pragma once
+/// \file
+/// The momentum the projections after a step take from strays (World::step: walls, obstacles
+/// and paddles push particles back out and remove their speed into the solid), booked to the
+/// solid that pushed, so that loads close the fluid's momentum balance.
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include <tide/particles.hpp>
+#include <tide/world.hpp>
+
+#include "core/parallel.hpp"
+#include "core/periodic_box.hpp"
+
+namespace tide {
+
+class ContactImpulses {
+public:
+    /// Starts a step's booking: remembers the velocities, and where each solid's moments are taken.
+    void begin(const ParticleStore& p, std::span<const glm::dvec3> references, const PeriodicBox& periodic) {
+        before_.assign(p.velocity.begin(), p.velocity.end());
+        references_.assign(references.begin(), references.end());
+        periodic_ = periodic;
+        totals_.assign(references.size(), SolidLoad{});
+    }
+
+    /// Books every velocity changed since the last call, m_i Δv_i given to the fluid, to solid
+    /// `solidOf(i, Δv_i)`. Fixed chunks summed in order: the same bits for any thread count.
+    template <class SolidOf>
+    void book(const ParticleStore& p, int threads, SolidOf&& solidOf) {
+        const std::size_t solids = totals_.size();
+        const auto n = p.size();
+        const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
+        partial_.assign(static_cast<std::size_t>(chunks) * solids, SolidLoad{});
+        parallelFor(chunks, threads, [&](std::uint32_t c) {
+            SolidLoad* sums = partial_.data() + static_cast<std::size_t>(c) * solids;
+            for (std::uint32_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+                const glm::vec3 dv = p.velocity[i] - before_[i];
+                if (dv == glm::vec3(0.0f)) continue;
+                before_[i] = p.velocity[i];
+                const std::uint16_t s = solidOf(i, dv);
+                if (s >= solids) continue;
+                const glm::dvec3 impulse = static_cast<double>(p.mass[i]) * glm::dvec3(dv);
+                sums[s].pressureForce += impulse;
+                sums[s].moment += glm::cross(glm::dvec3(periodic_.delta(p.position[i], glm::vec3(references_[s]))), impulse);
+            }
+        });
+        for (std::uint32_t c = 0; c < chunks; ++c)
+            for (std::size_t s = 0; s < solids; ++s) {
+                totals_[s].pressureForce += partial_[static_cast<std::size_t>(c) * solids + s].pressureForce;
+                totals_[s].moment += partial_[static_cast<std::size_t>(c) * solids + s].moment;
+            }
+    }
+
+    /// Adds the booked impulses' reaction, as forces over the step of `dt` seconds, to the
+    /// step's loads (as pressure: contact is normal) and their impulse to the running sums.
+    void finish(double dt, std::vector<SolidLoad>& step, std::vector<SolidLoad>& impulses) const {
+        if (!(dt > 0.0)) return;
+        step.resize(totals_.size());
+        impulses.resize(totals_.size());
+        for (std::size_t s = 0; s < totals_.size(); ++s) {
+            step[s].pressureForce -= totals_[s].pressureForce / dt;
+            step[s].moment -= totals_[s].moment / dt;
+            impulses[s].pressureForce -= totals_[s].pressureForce;
+            impulses[s].moment -= totals_[s].moment;
+        }
+    }
+
+private:
+    static constexpr std::uint32_t kChunk = 2048;
+    std::vector<glm::vec3> before_;
+    std::vector<glm::dvec3> references_;
+    PeriodicBox periodic_;
+    std::vector<SolidLoad> totals_;   ///< Σ m Δv given to the fluid, and its moment, per solid
+    std::vector<SolidLoad> partial_;  ///< per chunk and solid
+};
+
+}  // namespace tide

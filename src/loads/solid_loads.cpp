@@ -1,0 +1,56 @@
+#include "loads/solid_loads.hpp"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "core/parallel.hpp"
+
+namespace tide {
+
+namespace {
+/// Fluid particles a chunk sums: fixed, so the grouping of the sums never depends on threads.
+constexpr std::uint32_t kChunk = 2048;
+}  // namespace
+
+void sumSolidLoads(const WallLoads& loads, const CrossNeighborList& boundaryNeighbors, const BoundaryParticles& boundary,
+                   std::uint32_t fluidCount, double dt, std::span<const glm::dvec3> references,
+                   const PeriodicBox& periodic, int threads, std::vector<SolidLoad>& out) {
+    const std::size_t solids = references.size();
+    out.assign(solids, SolidLoad{});
+    if (fluidCount == 0 || solids == 0 || !(dt > 0.0)) return;
+    const std::uint32_t chunks = (fluidCount + kChunk - 1) / kChunk;
+    std::vector<SolidLoad> partial(static_cast<std::size_t>(chunks) * solids);
+    const double perSecond = 1.0 / dt;
+    parallelFor(chunks, threads, [&](std::uint32_t c) {
+        SolidLoad* sums = partial.data() + static_cast<std::size_t>(c) * solids;
+        const std::uint32_t end = std::min(fluidCount, (c + 1) * kChunk);
+        for (std::uint32_t i = c * kChunk; i < end; ++i) {
+            const auto walls = boundaryNeighbors.of(i);
+            const std::uint64_t slot = boundaryNeighbors.offset(i);
+            for (std::size_t k = 0; k < walls.size(); ++k) {
+                const std::uint32_t b = walls[k];
+                // The solid's load is the reaction: minus what b applied to fluid particle i.
+                const glm::dvec3 pressure = -(glm::dvec3(loads.pressureForce[slot + k]) +
+                                              perSecond * glm::dvec3(loads.pressureImpulse[slot + k]));
+                const glm::dvec3 viscous = -glm::dvec3(loads.viscousForce[slot + k]);
+                const std::uint16_t s = boundary.solid[b];
+                if (s >= solids) continue;
+                SolidLoad& load = sums[s];
+                load.pressureForce += pressure;
+                load.viscousForce += viscous;
+                const glm::dvec3 arm = glm::dvec3(periodic.delta(boundary.position[b], glm::vec3(references[s])));
+                load.moment += glm::cross(arm, pressure + viscous);
+            }
+        }
+    });
+    for (std::uint32_t c = 0; c < chunks; ++c)
+        for (std::size_t s = 0; s < solids; ++s) {
+            const SolidLoad& part = partial[static_cast<std::size_t>(c) * solids + s];
+            out[s].pressureForce += part.pressureForce;
+            out[s].viscousForce += part.viscousForce;
+            out[s].moment += part.moment;
+        }
+}
+
+}  // namespace tide
