@@ -5,7 +5,7 @@
 #   docs/guide/scripts/make_pictures.sh [WORK_DIR]     (default: out/guide)
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
-work=${1:-out/guide}
+work=$(realpath -m "${1:-out/guide}")
 python=/usr/bin/python3
 tide=build/bin/tide
 images=docs/images
@@ -36,8 +36,8 @@ $tide render scenes/dam_break.json --out "$work/dam_speed" --width 480 --height 
 cp "$work/dam_speed/frame_00009.png" $images/guide-dam-break-particles.png
 
 # The C++ Fluid API (fluid-api.md): install, build the program outside the tree, run, plot.
-cmake --install build --prefix "$PWD/$work/tide-prefix" >/dev/null
-cmake -S $scripts/fluid_api -B "$work/fluid_api" -DCMAKE_PREFIX_PATH="$PWD/$work/tide-prefix" >/dev/null
+cmake --install build --prefix "$work/tide-prefix" >/dev/null
+cmake -S $scripts/fluid_api -B "$work/fluid_api" -DCMAKE_PREFIX_PATH="$work/tide-prefix" >/dev/null
 cmake --build "$work/fluid_api" >/dev/null
 "$work/fluid_api/oil_and_water" "$work/oil_and_water.csv" 2
 $python $scripts/plot_frame.py "$work/oil_and_water.csv" $images/guide-fluid-api.png --color material \
