@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # Regenerates the guide's pictures in docs/images/ by following each tutorial's commands
 # (docs/guide/*.md). Needs a full build (`make demo` or `make test`: tide, tide-view for the
-# install) and Debian's python3-matplotlib. Takes a few minutes on two idle cores.
+# install) and Debian's python3-matplotlib. Takes ~5 minutes on two idle cores.
 #   docs/guide/scripts/make_pictures.sh [WORK_DIR]     (default: out/guide)
+# IMAGES=DIR writes the pictures there instead of docs/images/: a check that every tutorial's
+# commands still run, leaving the committed pictures alone.
 set -euo pipefail
 cd "$(dirname "$0")/../../.."
 work=$(realpath -m "${1:-out/guide}")
 python=/usr/bin/python3
 tide=build/bin/tide
-images=docs/images
+images=${IMAGES:-docs/images}
+mkdir -p "$images"
 scripts=docs/guide/scripts
 mkdir -p "$work"
 
