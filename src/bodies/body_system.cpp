@@ -1,0 +1,272 @@
+/// \file
+/// Bodies with contact. Why our own penalty contact rather than Bullet (libbullet-dev 3.24):
+/// the fluid sets the step (variable, ~1e-4 s) and Bullet wants its own fixed internal step
+/// with interpolated poses; its default collision margin (4 cm) is as large as the bodies of a
+/// tank test; its sleeping freezes bodies the fluid should still move; it works in single
+/// precision (the double build is not what Debian ships) while the kernel's pose is double;
+/// and its contact caches (warm-started persistent manifolds) are internal state a checkpoint
+/// cannot restore bit for bit. The contacts needed here — boxes, cylinders, spheres and meshes
+/// against walls, half-spaces, fixed obstacles and each other — are served by probe points of
+/// one shape against the exact signed distance of the other, both ways round.
+///
+/// Contact force per probe that penetrates δ > 0 along the other shape's outward normal n
+/// (a linear spring–dashpot, Cundall & Strack 1979, "A discrete numerical model for granular
+/// assemblies", eqs. 4–6), with viscously regularised Coulomb friction:
+///   F_n = max(0, k δ − c v_n),   F_t = −min(μ F_n, c |v_t|) v_t/|v_t|,
+/// v the probe's velocity relative to the other shape. The stiffness k per probe defaults to
+/// k = m g / (N_face · 1e-3 · size): a body resting on a face (N_face probes) sinks 0.1 % of its
+/// size; c = 2ζ √(k m / N_face) makes that face critically damped at ζ = 1. At rest the springs
+/// carry exactly the weight. The sub-step keeps ω τ ≤ 0.3 for ω² = 2 N_face k / m.
+
+#include <tide/bodies.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "bodies/checks.hpp"
+#include "bodies/contact_shapes.hpp"
+
+namespace tide::bodies {
+
+namespace {
+
+struct ContactParams {
+    double stiffness = 0.0;  // per probe, N/m
+    double damping = 0.0;    // per probe, N s/m
+    double friction = 0.0;
+    int probesPerFace = 1;
+    double dampingRatio = 1.0;
+};
+
+struct Contacting {
+    glm::dvec3 x{0.0};       // centre of mass (or 0 for fixed)
+    glm::dmat3 R{1.0};
+    glm::dvec3 c0{0.0};      // rest centre of mass
+    glm::dvec3 v{0.0}, w{0.0};
+    bool fixed = true;
+
+    [[nodiscard]] glm::dvec3 toWorld(const glm::dvec3& p0) const { return fixed ? p0 : x + R * (p0 - c0); }
+    [[nodiscard]] glm::dvec3 toRest(const glm::dvec3& p) const { return fixed ? p : c0 + glm::transpose(R) * (p - x); }
+    [[nodiscard]] glm::dvec3 normalToWorld(const glm::dvec3& n0) const { return fixed ? n0 : R * n0; }
+    [[nodiscard]] glm::dvec3 velocityAt(const glm::dvec3& p) const {
+        return fixed ? glm::dvec3(0.0) : v + glm::cross(w, p - x);
+    }
+};
+
+Contacting pose(const RigidBody& b) {
+    Contacting c;
+    c.x = b.position();
+    c.R = b.rotation();
+    c.c0 = b.massProperties().centerOfMass;
+    c.v = b.velocity();
+    c.w = b.angularVelocity();
+    c.fixed = false;
+    return c;
+}
+
+struct Load {
+    glm::dvec3 force{0.0}, moment{0.0};
+};
+
+}  // namespace
+
+struct BodySystem::Impl {
+    glm::dvec3 gravity{0.0};
+    std::vector<std::unique_ptr<RigidBody>> bodies;
+    std::vector<ContactShape> bodyShapes;
+    std::vector<ContactParams> params;
+    std::vector<ContactShape> fixedShapes;
+
+    // Probes of shape `a` (pose pa) against the signed distance of `b` (pose pb); the force on
+    // a's probes goes to loadA (if not null), its reaction to loadB (if not null).
+    static void probe(const ContactShape& a, const Contacting& pa, const ContactShape& b, const Contacting& pb,
+                      double k, double c, double mu, Load* loadA, Load* loadB) {
+        for (const ContactProbe& pr : a.probes) {
+            const glm::dvec3 p = pa.toWorld(pr.point);
+            glm::dvec3 n0;
+            const double d = signedDistance(b.shape, pb.toRest(p), n0) - pr.radius;
+            if (!(d < 0.0)) continue;
+            const glm::dvec3 n = pb.normalToWorld(n0);
+            const glm::dvec3 at = p - pr.radius * n;  // on a sphere probe's surface
+            const glm::dvec3 vrel = pa.velocityAt(at) - pb.velocityAt(at);
+            const double vn = glm::dot(vrel, n);
+            const double fn = std::max(0.0, -k * d - c * vn);
+            if (fn == 0.0) continue;
+            glm::dvec3 f = fn * n;
+            const glm::dvec3 vt = vrel - vn * n;
+            const double speed = glm::length(vt);
+            if (speed > 0.0) f -= (std::min(mu * fn, c * speed) / speed) * vt;
+            if (loadA) {
+                loadA->force += f;
+                loadA->moment += glm::cross(at - pa.x, f);
+            }
+            if (loadB) {
+                loadB->force -= f;
+                loadB->moment -= glm::cross(at - pb.x, f);
+            }
+        }
+    }
+
+    void contactLoads(std::vector<Load>& loads) const {
+        const std::size_t n = bodies.size();
+        std::vector<Contacting> poses(n);
+        for (std::size_t i = 0; i < n; ++i) poses[i] = pose(*bodies[i]);
+        const Contacting still;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (!bodies[i]->def().contact.enabled) continue;
+            const ContactShape& si = bodyShapes[i];
+            const ContactParams& pi = params[i];
+            const glm::dvec3 ci = poses[i].toWorld(si.center);
+            for (const ContactShape& f : fixedShapes) {
+                const bool plane = f.shape.shape == ObstacleDef::Shape::Plane;
+                if (!plane && glm::length(ci - f.center) > si.boundingRadius + f.boundingRadius) continue;
+                probe(si, poses[i], f, still, pi.stiffness, pi.damping, pi.friction, &loads[i], nullptr);
+                if (!plane) probe(f, still, si, poses[i], pi.stiffness, pi.damping, pi.friction, nullptr, &loads[i]);
+            }
+            for (std::size_t j = i + 1; j < n; ++j) {
+                if (!bodies[j]->def().contact.enabled) continue;
+                const ContactShape& sj = bodyShapes[j];
+                if (glm::length(ci - poses[j].toWorld(sj.center)) > si.boundingRadius + sj.boundingRadius) continue;
+                const ContactParams& pj = params[j];
+                const double k = pi.stiffness * pj.stiffness / (pi.stiffness + pj.stiffness);
+                const double mi = bodies[i]->massProperties().mass, mj = bodies[j]->massProperties().mass;
+                const double zeta = 0.5 * (pi.dampingRatio + pj.dampingRatio);
+                const double c = 2.0 * zeta * std::sqrt(k * (mi * mj / (mi + mj)) / std::min(pi.probesPerFace, pj.probesPerFace));
+                const double mu = std::sqrt(pi.friction * pj.friction);
+                probe(si, poses[i], sj, poses[j], k, c, mu, &loads[i], &loads[j]);
+                probe(sj, poses[j], si, poses[i], k, c, mu, &loads[j], &loads[i]);
+            }
+        }
+    }
+};
+
+BodySystem::BodySystem(const glm::dvec3& gravity) : impl_(std::make_unique<Impl>()) {
+    requireFiniteD("gravity", gravity);
+    impl_->gravity = gravity;
+}
+BodySystem::~BodySystem() = default;
+BodySystem::BodySystem(BodySystem&&) noexcept = default;
+BodySystem& BodySystem::operator=(BodySystem&&) noexcept = default;
+
+void BodySystem::setWalls(const glm::dvec3& min, const glm::dvec3& max) {
+    requireFiniteD("walls.min", min);
+    requireFiniteD("walls.max", max);
+    if (!(max.x > min.x && max.y > min.y && max.z > min.z))
+        throw std::invalid_argument("walls.max: must exceed walls.min on every axis, got " + showd(max));
+    for (int k = 0; k < 3; ++k)
+        for (int side = 0; side < 2; ++side) {
+            ObstacleDef plane;
+            plane.shape = ObstacleDef::Shape::Plane;
+            plane.point = glm::vec3(side == 0 ? min : max);
+            plane.normal = glm::vec3(0.0f);
+            plane.normal[k] = side == 0 ? 1.0f : -1.0f;  // the wall's solid lies outside the box
+            impl_->fixedShapes.push_back(makeContactShape(plane));
+        }
+}
+
+void BodySystem::addFixedObstacle(const ObstacleDef& obstacle) {
+    if (obstacle.shape == ObstacleDef::Shape::Plane && !(glm::length(obstacle.normal) > 0.0f))
+        throw std::invalid_argument("obstacle.normal: must be non-zero");
+    if (obstacle.shape == ObstacleDef::Shape::Mesh && !obstacle.mesh)
+        throw std::invalid_argument("obstacle.mesh: no mesh given");
+    impl_->fixedShapes.push_back(makeContactShape(obstacle));
+}
+
+std::size_t BodySystem::addBody(const BodyDef& def) {
+    auto body = std::make_unique<RigidBody>(def, impl_->gravity);
+    ContactShape shape = makeContactShape(def.shape);
+    const ContactDef& cd = def.contact;
+    requireNonNegativeD(def.name + ".contact.stiffness", cd.stiffness);
+    requirePositiveD(def.name + ".contact.damping_ratio", cd.dampingRatio);
+    requireNonNegativeD(def.name + ".contact.friction", cd.friction);
+    ContactParams p;
+    p.probesPerFace = shape.probesPerFace;
+    p.dampingRatio = cd.dampingRatio;
+    p.friction = cd.friction;
+    const double m = body->massProperties().mass;
+    const double g = glm::length(impl_->gravity) > 0.0 ? glm::length(impl_->gravity) : 9.81;
+    p.stiffness = cd.stiffness > 0.0 ? cd.stiffness : m * g / (p.probesPerFace * 1e-3 * body->characteristicSize_);
+    p.damping = 2.0 * cd.dampingRatio * std::sqrt(p.stiffness * m / p.probesPerFace);
+    impl_->bodies.push_back(std::move(body));
+    impl_->bodyShapes.push_back(std::move(shape));
+    impl_->params.push_back(p);
+    return impl_->bodies.size() - 1;
+}
+
+std::size_t BodySystem::size() const { return impl_->bodies.size(); }
+RigidBody& BodySystem::body(std::size_t i) { return *impl_->bodies.at(i); }
+const RigidBody& BodySystem::body(std::size_t i) const { return *impl_->bodies.at(i); }
+
+void BodySystem::step(double dt, std::span<const glm::dvec3> forces, std::span<const glm::dvec3> moments) {
+    const std::size_t n = impl_->bodies.size();
+    if (!(dt > 0.0) || !std::isfinite(dt)) throw std::invalid_argument("bodies: step dt must be > 0, got " + showd(dt));
+    if ((!forces.empty() && forces.size() != n) || (!moments.empty() && moments.size() != n))
+        throw std::invalid_argument("bodies: step needs one force and one moment per body (" + std::to_string(n) + ")");
+    if (n == 0) return;
+    double tau0 = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < n; ++i) {
+        const RigidBody& b = *impl_->bodies[i];
+        tau0 = std::min(tau0, b.stableSubstep());
+        if (b.def().contact.enabled) {
+            const ContactParams& p = impl_->params[i];
+            tau0 = std::min(tau0, 0.3 / std::sqrt(2.0 * p.probesPerFace * p.stiffness / b.massProperties().mass));
+        }
+    }
+    const int steps = std::max(1, static_cast<int>(std::ceil(dt / tau0)));
+    const double tau = dt / steps;
+
+    std::vector<glm::dvec3> v0(n), w0(n), contact(n, glm::dvec3(0.0));
+    for (std::size_t i = 0; i < n; ++i) {
+        v0[i] = impl_->bodies[i]->velocity();
+        w0[i] = impl_->bodies[i]->angularVelocity();
+    }
+    std::vector<Load> loads(n);
+    auto kickAll = [&]() {
+        std::fill(loads.begin(), loads.end(), Load{});
+        impl_->contactLoads(loads);
+        for (std::size_t i = 0; i < n; ++i) {
+            RigidBody& b = *impl_->bodies[i];
+            contact[i] += loads[i].force;
+            RigidBody::Loads l = b.internalLoads(false);
+            l.force += loads[i].force;
+            l.moment += loads[i].moment;
+            if (!forces.empty()) l.force += forces[i];
+            if (!moments.empty()) l.moment += moments[i];
+            b.kick(0.5 * tau, l);
+        }
+    };
+    for (int s = 0; s < steps; ++s) {
+        kickAll();
+        for (auto& b : impl_->bodies) b->drift(tau);
+        kickAll();
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        RigidBody& b = *impl_->bodies[i];
+        b.a_ = (b.v_ - v0[i]) / dt;
+        b.alpha_ = (b.omega_ - w0[i]) / dt;
+        b.contactForce_ = contact[i] / (2.0 * steps);
+        static_cast<void>(b.internalLoads(true));
+    }
+}
+
+std::vector<double> BodySystem::saveState() const {
+    std::vector<double> s{static_cast<double>(impl_->bodies.size())};
+    for (const auto& b : impl_->bodies) {
+        const std::vector<double> one = b->saveState();
+        s.insert(s.end(), one.begin(), one.end());
+    }
+    return s;
+}
+
+void BodySystem::restoreState(std::span<const double> s) {
+    const std::size_t n = impl_->bodies.size();
+    if (s.size() != 1 + n * RigidBody::kStateSize || s[0] != static_cast<double>(n))
+        throw std::invalid_argument("bodies: the saved state is for " + (s.empty() ? std::string("no") : showd(s[0])) +
+                                    " bodies, this system has " + std::to_string(n));
+    for (std::size_t i = 0; i < n; ++i)
+        impl_->bodies[i]->restoreState(s.subspan(1 + i * RigidBody::kStateSize, RigidBody::kStateSize));
+}
+
+}  // namespace tide::bodies
