@@ -167,7 +167,8 @@ public:
 
     /// Advance by dt (s) under the fluid's `force` (N) and `moment` (N m, about the centre of
     /// mass, world axes), held constant over dt; gravity and moorings are added inside,
-    /// sub-stepping when a mooring line is stiff. No contact (see BodySystem).
+    /// sub-stepping when a mooring line is stiff. No contact (see BodySystem). Throws
+    /// std::runtime_error naming the body when its pose or velocity is no longer finite.
     void step(double dt, const glm::dvec3& force, const glm::dvec3& moment);
 
     // Pose and rates (after the last step)
@@ -180,6 +181,7 @@ public:
     [[nodiscard]] const glm::dvec3& angularAcceleration() const { return alpha_; }  ///< rad/s²
     [[nodiscard]] glm::dmat3 rotation() const;                             ///< R(q)
     [[nodiscard]] double kineticEnergy() const;                            ///< J
+    [[nodiscard]] bool isFinite() const;                                   ///< pose and rates all finite
 
     /// Where the rest-pose point x0 is now.
     [[nodiscard]] glm::dvec3 toWorld(const glm::dvec3& restPoint) const;
@@ -217,7 +219,7 @@ private:
     void updateVelocities();
     [[nodiscard]] Loads internalLoads(bool record);
     [[nodiscard]] double stableSubstep() const;
-    void advance(double dt, const glm::dvec3& force, const glm::dvec3& moment);
+    void requireFinite() const;
 
     BodyDef def_;
     MassProperties props_;
@@ -256,17 +258,24 @@ public:
 
     /// Bodies stay inside the box [min, max] (its six faces are walls).
     void setWalls(const glm::dvec3& min, const glm::dvec3& max);
-    /// A fixed collider: a half-space (Plane) or a box, sphere, cylinder or mesh at rest.
-    void addFixedObstacle(const ObstacleDef& obstacle);
+    /// A fixed collider: a half-space (Plane) or a box, sphere, cylinder or mesh at rest;
+    /// `name` is used in errors (default obstacle<k>, k counting fixed obstacles).
+    void addFixedObstacle(const ObstacleDef& obstacle, const std::string& name = "");
     /// Adds a body; returns its index.
     std::size_t addBody(const BodyDef& def);
+
+    /// Throws std::invalid_argument naming the body and what it meets when a body pokes
+    /// deeper than `tolerance` (m) through a wall or a fixed obstacle or into another body, or
+    /// a mooring anchor lies outside the walls. Call once after adding everything.
+    void validatePlacement(double tolerance = 0.0) const;
 
     [[nodiscard]] std::size_t size() const;
     [[nodiscard]] RigidBody& body(std::size_t i);
     [[nodiscard]] const RigidBody& body(std::size_t i) const;
 
     /// Advance every body by dt under its fluid force and moment (about its centre of mass,
-    /// world axes; one each per body, or empty spans for none).
+    /// world axes; one each per body, or empty spans for none). Throws std::runtime_error
+    /// naming a body whose motion diverged.
     void step(double dt, std::span<const glm::dvec3> forces, std::span<const glm::dvec3> moments);
 
     /// All bodies' states, concatenated (see RigidBody::saveState).

@@ -24,6 +24,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "bodies/checks.hpp"
 #include "bodies/contact_shapes.hpp"
@@ -78,6 +79,10 @@ struct BodySystem::Impl {
     std::vector<ContactShape> bodyShapes;
     std::vector<ContactParams> params;
     std::vector<ContactShape> fixedShapes;
+    std::vector<std::string> fixedNames;
+    bool walls = false;
+    glm::dvec3 wallMin{0.0}, wallMax{0.0};
+    int obstacleCount = 0;
 
     // Probes of shape `a` (pose pa) against the signed distance of `b` (pose pb); the force on
     // a's probes goes to loadA (if not null), its reaction to loadB (if not null).
@@ -163,15 +168,70 @@ void BodySystem::setWalls(const glm::dvec3& min, const glm::dvec3& max) {
             plane.normal = glm::vec3(0.0f);
             plane.normal[k] = side == 0 ? 1.0f : -1.0f;  // the wall's solid lies outside the box
             impl_->fixedShapes.push_back(makeContactShape(plane));
+            impl_->fixedNames.push_back(std::string("the wall ") + "xyz"[k] + (side == 0 ? " = min" : " = max"));
         }
+    impl_->walls = true;
+    impl_->wallMin = min;
+    impl_->wallMax = max;
 }
 
-void BodySystem::addFixedObstacle(const ObstacleDef& obstacle) {
+void BodySystem::addFixedObstacle(const ObstacleDef& obstacle, const std::string& name) {
     if (obstacle.shape == ObstacleDef::Shape::Plane && !(glm::length(obstacle.normal) > 0.0f))
         throw std::invalid_argument("obstacle.normal: must be non-zero");
     if (obstacle.shape == ObstacleDef::Shape::Mesh && !obstacle.mesh)
         throw std::invalid_argument("obstacle.mesh: no mesh given");
     impl_->fixedShapes.push_back(makeContactShape(obstacle));
+    impl_->fixedNames.push_back(name.empty() ? "obstacle" + std::to_string(impl_->obstacleCount) : name);
+    ++impl_->obstacleCount;
+}
+
+void BodySystem::validatePlacement(double tolerance) const {
+    const Impl& m = *impl_;
+    const Contacting still;
+    // The deepest probe of `a` inside `b`, m (negative inside).
+    auto deepest = [](const ContactShape& a, const Contacting& pa, const ContactShape& b, const Contacting& pb,
+                      glm::dvec3& where) {
+        double worst = std::numeric_limits<double>::infinity();
+        for (const ContactProbe& pr : a.probes) {
+            const glm::dvec3 p = pa.toWorld(pr.point);
+            glm::dvec3 n;
+            const double d = signedDistance(b.shape, pb.toRest(p), n) - pr.radius;
+            if (d < worst) {
+                worst = d;
+                where = p;
+            }
+        }
+        return worst;
+    };
+    for (std::size_t i = 0; i < m.bodies.size(); ++i) {
+        const RigidBody& bi = *m.bodies[i];
+        const Contacting pi = pose(bi);
+        glm::dvec3 where;
+        for (std::size_t f = 0; f < m.fixedShapes.size(); ++f) {
+            double d = deepest(m.bodyShapes[i], pi, m.fixedShapes[f], still, where);
+            if (m.fixedShapes[f].shape.shape != ObstacleDef::Shape::Plane)
+                d = std::min(d, deepest(m.fixedShapes[f], still, m.bodyShapes[i], pi, where));
+            if (d < -tolerance)
+                throw std::invalid_argument(bi.def().name + ": overlaps " + m.fixedNames[f] + " by " + showd(-d) +
+                                            " m (at " + showd(where) + ")");
+        }
+        for (std::size_t j = i + 1; j < m.bodies.size(); ++j) {
+            const Contacting pj = pose(*m.bodies[j]);
+            const double d = std::min(deepest(m.bodyShapes[i], pi, m.bodyShapes[j], pj, where),
+                                      deepest(m.bodyShapes[j], pj, m.bodyShapes[i], pi, where));
+            if (d < -tolerance)
+                throw std::invalid_argument(bi.def().name + ": overlaps " + m.bodies[j]->def().name + " by " +
+                                            showd(-d) + " m (at " + showd(where) + ")");
+        }
+        if (!m.walls) continue;
+        for (std::size_t k = 0; k < bi.def().moorings.size(); ++k) {
+            const glm::dvec3 a = bi.def().moorings[k].anchor;
+            const glm::dvec3 lo = m.wallMin - glm::dvec3(tolerance), hi = m.wallMax + glm::dvec3(tolerance);
+            if (a.x < lo.x || a.y < lo.y || a.z < lo.z || a.x > hi.x || a.y > hi.y || a.z > hi.z)
+                throw std::invalid_argument(bi.def().name + ".moorings[" + std::to_string(k) +
+                                            "].anchor: outside the domain, got " + showd(a));
+        }
+    }
 }
 
 std::size_t BodySystem::addBody(const BodyDef& def) {
@@ -247,6 +307,7 @@ void BodySystem::step(double dt, std::span<const glm::dvec3> forces, std::span<c
         b.a_ = (b.v_ - v0[i]) / dt;
         b.alpha_ = (b.omega_ - w0[i]) / dt;
         b.contactForce_ = contact[i] / (2.0 * steps);
+        b.requireFinite();
         static_cast<void>(b.internalLoads(true));
     }
 }

@@ -28,6 +28,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include <glm/gtc/quaternion.hpp>
@@ -302,7 +303,20 @@ void RigidBody::step(double dt, const glm::dvec3& force, const glm::dvec3& momen
     a_ = (v_ - v0) / dt;
     alpha_ = (omega_ - w0) / dt;
     contactForce_ = glm::dvec3(0.0);
+    requireFinite();
     static_cast<void>(internalLoads(true));
+}
+
+bool RigidBody::isFinite() const {
+    auto ok = [](const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    return ok(x_) && ok(v_) && ok(l_) && ok(omega_) && std::isfinite(q_.w) && std::isfinite(q_.x) &&
+           std::isfinite(q_.y) && std::isfinite(q_.z);
+}
+
+void RigidBody::requireFinite() const {
+    if (!isFinite())
+        throw std::runtime_error(def_.name + ": the body's motion diverged (position " + showd(x_) + ", velocity " +
+                                 showd(v_) + ", angular momentum " + showd(l_) + ")");
 }
 
 double RigidBody::kineticEnergy() const {
