@@ -126,7 +126,9 @@ struct BodySystem::Impl {
             const glm::dvec3 ci = poses[i].toWorld(si.center);
             for (const ContactShape& f : fixedShapes) {
                 const bool plane = f.shape.shape == ObstacleDef::Shape::Plane;
-                if (!plane && glm::length(ci - f.center) > si.boundingRadius + f.boundingRadius) continue;
+                if (plane ? glm::dot(ci - f.center, glm::normalize(glm::dvec3(f.shape.normal))) > si.boundingRadius
+                          : glm::length(ci - f.center) > si.boundingRadius + f.boundingRadius)
+                    continue;
                 probe(si, poses[i], f, still, pi.stiffness, pi.damping, pi.friction, &loads[i], nullptr);
                 if (!plane) probe(f, still, si, poses[i], pi.stiffness, pi.damping, pi.friction, nullptr, &loads[i]);
             }
