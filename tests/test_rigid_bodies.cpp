@@ -16,6 +16,8 @@
 #include <tide/bodies.hpp>
 #include <tide/triangle_mesh.hpp>
 
+#include "bodies/body_pose.hpp"
+
 namespace {
 
 using namespace tide;
@@ -202,6 +204,18 @@ TEST(RigidBody, ThrownBodyKeepsItsPointsOnItsOwnMotion) {
     }
     EXPECT_LT(worst, 1e-6);
     EXPECT_LT(worstV, 1e-6);
+    // The same pose as the moving obstacles' RigidPose, with its acceleration g (float).
+    const RigidPose pose = poseOf(body);
+    std::vector<glm::vec3> acc(rest.size());
+    body.placePoints(rest, x, {}, acc);
+    for (std::size_t i = 0; i < rest.size(); i += 97) {
+        EXPECT_LT(glm::length(pose.place(rest[i]) - x[i]), 1e-6f);
+        EXPECT_LT(glm::length(pose.velocityAt(x[i]) - v[i]), 1e-5f);
+        EXPECT_LT(glm::length(pose.accelerationAt(x[i]) - acc[i]), 1e-4f);
+        const glm::dvec3 r = glm::dvec3(x[i]) - body.position();
+        const glm::dvec3 aExact = g - 9.0 * glm::dvec3(r.x, r.y, 0.0);  // centripetal ω² r about z
+        EXPECT_LT(glm::length(glm::dvec3(acc[i]) - aExact), 1e-4);
+    }
 }
 
 TEST(RigidBody, TorqueFreeAsymmetricBodyKeepsItsAngularMomentum) {

@@ -190,9 +190,10 @@ public:
     /// Acceleration of the material point now at x: A + α × r + ω × (ω × r).
     [[nodiscard]] glm::dvec3 accelerationAt(const glm::dvec3& worldPoint) const;
     /// Places rest-pose points (e.g. boundary particles) at the current pose, with their
-    /// velocities; `positions` and `velocities` have rest.size() entries (velocities may be empty).
+    /// velocities and accelerations; each span has rest.size() entries or is empty (skipped).
+    /// (Inside tide, bodies/body_pose.hpp gives the same pose as a RigidPose.)
     void placePoints(std::span<const glm::vec3> rest, std::span<glm::vec3> positions,
-                     std::span<glm::vec3> velocities) const;
+                     std::span<glm::vec3> velocities = {}, std::span<glm::vec3> accelerations = {}) const;
 
     [[nodiscard]] const MassProperties& massProperties() const { return props_; }
     [[nodiscard]] const BodyDef& def() const { return def_; }

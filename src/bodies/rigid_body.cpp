@@ -334,14 +334,18 @@ glm::dvec3 RigidBody::accelerationAt(const glm::dvec3& worldPoint) const {
 }
 
 void RigidBody::placePoints(std::span<const glm::vec3> rest, std::span<glm::vec3> positions,
-                            std::span<glm::vec3> velocities) const {
-    if (positions.size() != rest.size() || (!velocities.empty() && velocities.size() != rest.size()))
-        throw std::invalid_argument(def_.name + ": placePoints needs as many positions (and velocities) as rest points");
+                            std::span<glm::vec3> velocities, std::span<glm::vec3> accelerations) const {
+    auto fits = [&rest](std::size_t n) { return n == 0 || n == rest.size(); };
+    if (!fits(positions.size()) || !fits(velocities.size()) || !fits(accelerations.size()))
+        throw std::invalid_argument(def_.name + ": placePoints needs as many positions, velocities and "
+                                                "accelerations as rest points (or none)");
     const glm::dmat3 R = rotation();
     for (std::size_t i = 0; i < rest.size(); ++i) {
         const glm::dvec3 r = R * (glm::dvec3(rest[i]) - restCenter_);
-        positions[i] = glm::vec3(x_ + r);
+        if (!positions.empty()) positions[i] = glm::vec3(x_ + r);
         if (!velocities.empty()) velocities[i] = glm::vec3(v_ + glm::cross(omega_, r));
+        if (!accelerations.empty())
+            accelerations[i] = glm::vec3(a_ + glm::cross(alpha_, r) + glm::cross(omega_, glm::cross(omega_, r)));
     }
 }
 
