@@ -519,6 +519,16 @@ TEST(Contact, HeavyBoxComesToRestOnTheFloorCarryingItsWeight) {
     const glm::dmat3 R = b.rotation();
     const double alignment = std::max({std::abs(R[0].y), std::abs(R[1].y), std::abs(R[2].y)});
     EXPECT_NEAR(alignment, 1.0, 1e-4);
+
+    // Under water: the fluid's buoyancy ρ g V, handed in as the fluid load, leaves the floor
+    // (ρ_b − ρ) g V to carry (issue 44, acceptance 3, without the fluid).
+    BodySystem wet(glm::dvec3(0.0, -9.81, 0.0));
+    wet.setWalls(glm::dvec3(0.0), glm::dvec3(1.0));
+    wet.addBody(def);
+    const double V = wet.body(0).massProperties().volume;
+    const std::vector<glm::dvec3> buoyancy{{0.0, 1000.0 * 9.81 * V, 0.0}}, none{glm::dvec3(0.0)};
+    for (int s = 0; s < 2000; ++s) wet.step(1e-3, buoyancy, none);
+    EXPECT_NEAR(wet.body(0).contactForce().y / ((2000.0 - 1000.0) * 9.81 * V), 1.0, 0.03);
 }
 
 TEST(Contact, StackedBoxesSettleWithoutExploding) {
@@ -571,6 +581,30 @@ TEST(Contact, DebrisHittingAPileBouncesWithoutGainingEnergy) {
     EXPECT_GT(closest, 0.05 - 0.005);       // penetrates the pile by less than 5 mm
     EXPECT_LT(system.body(0).position().x, 0.0);  // it did not pass through
     EXPECT_LT(system.body(0).velocity().x, 1.0);  // it was stopped or turned back
+}
+
+TEST(Contact, FrictionHoldsOnAGentleSlopeAndSlidesOnASteepOne) {
+    // A cube on a plane tilted by θ (gravity tilted instead), μ = 0.5: it sticks at 20°
+    // (tan θ = 0.36 < μ) and slides at 35° with a = g (sin θ − μ cos θ) (Coulomb).
+    for (const double degrees : {20.0, 35.0}) {
+        const double theta = degrees * M_PI / 180.0;
+        BodySystem system(9.81 * glm::dvec3(std::sin(theta), -std::cos(theta), 0.0));
+        system.setWalls(glm::dvec3(-10.0, 0.0, -10.0), glm::dvec3(10.0));
+        BodyDef def = cubeBody(1500.0, {0.0f, 0.0f, 0.0f}, 0.1f);
+        def.contact.friction = 0.5;
+        system.addBody(def);
+        for (int s = 0; s < 1000; ++s) system.step(1e-3, {}, {});
+        const double x1 = system.body(0).position().x, v1 = system.body(0).velocity().x;
+        for (int s = 0; s < 1000; ++s) system.step(1e-3, {}, {});
+        const double moved = system.body(0).position().x - x1;
+        if (degrees < 30.0) {
+            EXPECT_LT(std::abs(moved), 1e-5) << "creeps at " << degrees << " degrees";
+        } else {
+            const double a = 9.81 * (std::sin(theta) - 0.5 * std::cos(theta));
+            EXPECT_NEAR(moved / (v1 + 0.5 * a), 1.0, 0.01);
+            EXPECT_NEAR((system.body(0).velocity().x - v1) / a, 1.0, 0.01);
+        }
+    }
 }
 
 TEST(Contact, PlacementIsCheckedNamingTheBody) {
@@ -660,7 +694,7 @@ TEST(Checkpoint, RestoredBodiesContinueBitForBit) {
         line.damping = 1.0;
         a.moorings.push_back(line);
         system.addBody(a);
-        BodyDef b = cubeBody(1500.0, {0.6f, 0.1f, 0.6f}, 0.08f);
+        BodyDef b = cubeBody(1500.0, {0.6f, 0.02f, 0.6f}, 0.08f);  // lands and slides: friction springs
         b.constraint = freeAxes({"x", "y", "rz"});
         system.addBody(b);
         return system;
@@ -669,6 +703,7 @@ TEST(Checkpoint, RestoredBodiesContinueBitForBit) {
     BodySystem first = make();
     for (int s = 0; s < 200; ++s) first.step(7e-4, forces, moments);
     const std::vector<double> saved = first.saveState();
+    ASSERT_GT(saved.size(), 1 + 2 * RigidBody::kStateSize + 1) << "no contact to carry over";
     for (int s = 0; s < 300; ++s) first.step(7e-4, forces, moments);
     BodySystem second = make();
     second.restoreState(saved);

@@ -128,8 +128,8 @@ std::array<double, 2> solveCatenary(double span, double rise, double length, dou
 // ---------------------------------------------------------------------------------------
 // Contact (BodySystem)
 
-/// Penalty contact of a body (spring–dashpot normal force per contact point, regularised
-/// Coulomb friction). Zero means "choose from the body's mass and size".
+/// Penalty contact of a body (spring–dashpot normal force per contact point, Coulomb
+/// friction through a tangential spring). Zero means "choose from the body's mass and size".
 struct ContactDef {
     bool enabled = true;
     double stiffness = 0.0;      ///< N/m per contact point; 0: m g / (4 · 1e-3 · size)
@@ -279,7 +279,9 @@ public:
     /// naming a body whose motion diverged.
     void step(double dt, std::span<const glm::dvec3> forces, std::span<const glm::dvec3> moments);
 
-    /// All bodies' states, concatenated (see RigidBody::saveState).
+    /// All bodies' states (see RigidBody::saveState) and the contacts' friction springs;
+    /// restoreState() into a system built the same way continues bit for bit. Its length
+    /// varies with the contacts.
     [[nodiscard]] std::vector<double> saveState() const;
     void restoreState(std::span<const double> state);
 

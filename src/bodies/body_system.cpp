@@ -9,11 +9,14 @@
 /// against walls, half-spaces, fixed obstacles and each other — are served by probe points of
 /// one shape against the exact signed distance of the other, both ways round.
 ///
-/// Contact force per probe that penetrates δ > 0 along the other shape's outward normal n
-/// (a linear spring–dashpot, Cundall & Strack 1979, "A discrete numerical model for granular
-/// assemblies", eqs. 4–6), with viscously regularised Coulomb friction:
-///   F_n = max(0, k δ − c v_n),   F_t = −min(μ F_n, c |v_t|) v_t/|v_t|,
-/// v the probe's velocity relative to the other shape. The stiffness k per probe defaults to
+/// Contact force per probe that penetrates δ > 0 along the other shape's outward normal n:
+/// the linear spring–dashpot of Cundall & Strack 1979 ("A discrete numerical model for
+/// granular assemblies", Géotechnique 29, eqs. 4–6 and the slip condition eq. 7):
+///   F_n = max(0, k δ − c v_n),   F_t = −k_t ξ − c v_t,  |F_t| ≤ μ F_n,
+/// v the probe's velocity relative to the other shape, ξ the tangential spring stretched by
+/// the sliding since the contact began (kept in the tangent plane, reset to the cap when it
+/// slips; k_t = k/2). The spring makes static friction hold a body on a slope without creep;
+/// its ξ per touching probe is state, saved with the bodies. The stiffness k per probe defaults to
 /// k = m g / (N_face · 1e-3 · size): a body resting on a face (N_face probes) sinks 0.1 % of its
 /// size; c = 2ζ √(k m / N_face) makes that face critically damped at ζ = 1. At rest the springs
 /// carry exactly the weight. The sub-step keeps ω τ ≤ 0.3 for ω² = 2 N_face k / m.
@@ -23,7 +26,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <stdexcept>
+#include <tuple>
 #include <string>
 
 #include "bodies/checks.hpp"
@@ -71,6 +76,20 @@ struct Load {
     glm::dvec3 force{0.0}, moment{0.0};
 };
 
+// A touching probe: (the probing shape, the probed shape, the probe's index). Shapes are
+// bodies by index, fixed shapes by kFixed | index.
+using ContactKey = std::tuple<std::uint32_t, std::uint32_t, std::uint32_t>;
+constexpr std::uint32_t kFixed = 0x80000000u;
+using Springs = std::map<ContactKey, glm::dvec3>;
+
+// Tangential springs: read from `current`; when `tau` > 0, stretched by v_t τ and written
+// with every probe still touching to `next` (probes that let go are forgotten).
+struct Friction {
+    const Springs* current = nullptr;
+    Springs* next = nullptr;
+    double tau = 0.0;
+};
+
 }  // namespace
 
 struct BodySystem::Impl {
@@ -87,8 +106,10 @@ struct BodySystem::Impl {
     // Probes of shape `a` (pose pa) against the signed distance of `b` (pose pb); the force on
     // a's probes goes to loadA (if not null), its reaction to loadB (if not null).
     static void probe(const ContactShape& a, const Contacting& pa, const ContactShape& b, const Contacting& pb,
-                      double k, double c, double mu, Load* loadA, Load* loadB) {
-        for (const ContactProbe& pr : a.probes) {
+                      double k, double c, double mu, Load* loadA, Load* loadB, std::uint32_t idA, std::uint32_t idB,
+                      const Friction& friction) {
+        for (std::size_t ip = 0; ip < a.probes.size(); ++ip) {
+            const ContactProbe& pr = a.probes[ip];
             const glm::dvec3 p = pa.toWorld(pr.point);
             glm::dvec3 n0;
             const double d = signedDistance(b.shape, pb.toRest(p), n0) - pr.radius;
@@ -99,10 +120,26 @@ struct BodySystem::Impl {
             const double vn = glm::dot(vrel, n);
             const double fn = std::max(0.0, -k * d - c * vn);
             if (fn == 0.0) continue;
-            glm::dvec3 f = fn * n;
             const glm::dvec3 vt = vrel - vn * n;
-            const double speed = glm::length(vt);
-            if (speed > 0.0) f -= (std::min(mu * fn, c * speed) / speed) * vt;
+            const ContactKey key{idA, idB, static_cast<std::uint32_t>(ip)};
+            glm::dvec3 xi(0.0);
+            if (const auto it = friction.current->find(key); it != friction.current->end()) xi = it->second;
+            if (friction.tau > 0.0) xi += friction.tau * vt;
+            // Into the current tangent plane, keeping its length (the contact frame turns).
+            const double len = glm::length(xi);
+            xi -= glm::dot(xi, n) * n;
+            const double inPlane = glm::length(xi);
+            if (inPlane > 0.0) xi *= len / inPlane;
+            const double kt = 0.5 * k;
+            glm::dvec3 ft = -kt * xi - c * vt;
+            const double cap = mu * fn, ftLen = glm::length(ft);
+            if (ftLen > cap) {  // slipping: Coulomb's cap, the spring holding what it can (eq. 7)
+                ft *= cap / ftLen;
+                xi = -(ft + c * vt) / kt;
+                if (glm::length(xi) * kt > cap) xi *= cap / (glm::length(xi) * kt);
+            }
+            if (friction.tau > 0.0) (*friction.next)[key] = xi;
+            const glm::dvec3 f = fn * n + ft;
             if (loadA) {
                 loadA->force += f;
                 loadA->moment += glm::cross(at - pa.x, f);
@@ -114,7 +151,13 @@ struct BodySystem::Impl {
         }
     }
 
-    void contactLoads(std::vector<Load>& loads) const {
+    Springs springs;  // tangential springs of the touching probes
+
+    // Contact loads at the current state; `tau` > 0 also advances the tangential springs by
+    // a sub-step of that length (once per sub-step, at its end).
+    void contactLoads(std::vector<Load>& loads, double tau) {
+        Springs next;
+        const Friction friction{&springs, &next, tau};
         const std::size_t n = bodies.size();
         std::vector<Contacting> poses(n);
         for (std::size_t i = 0; i < n; ++i) poses[i] = pose(*bodies[i]);
@@ -124,13 +167,19 @@ struct BodySystem::Impl {
             const ContactShape& si = bodyShapes[i];
             const ContactParams& pi = params[i];
             const glm::dvec3 ci = poses[i].toWorld(si.center);
-            for (const ContactShape& f : fixedShapes) {
+            const auto bi = static_cast<std::uint32_t>(i);
+            for (std::size_t fi = 0; fi < fixedShapes.size(); ++fi) {
+                const ContactShape& f = fixedShapes[fi];
+                const auto fid = kFixed | static_cast<std::uint32_t>(fi);
                 const bool plane = f.shape.shape == ObstacleDef::Shape::Plane;
                 if (plane ? glm::dot(ci - f.center, glm::normalize(glm::dvec3(f.shape.normal))) > si.boundingRadius
                           : glm::length(ci - f.center) > si.boundingRadius + f.boundingRadius)
                     continue;
-                probe(si, poses[i], f, still, pi.stiffness, pi.damping, pi.friction, &loads[i], nullptr);
-                if (!plane) probe(f, still, si, poses[i], pi.stiffness, pi.damping, pi.friction, nullptr, &loads[i]);
+                probe(si, poses[i], f, still, pi.stiffness, pi.damping, pi.friction, &loads[i], nullptr, bi, fid,
+                      friction);
+                if (!plane)
+                    probe(f, still, si, poses[i], pi.stiffness, pi.damping, pi.friction, nullptr, &loads[i], fid, bi,
+                          friction);
             }
             for (std::size_t j = i + 1; j < n; ++j) {
                 if (!bodies[j]->def().contact.enabled) continue;
@@ -142,10 +191,12 @@ struct BodySystem::Impl {
                 const double zeta = 0.5 * (pi.dampingRatio + pj.dampingRatio);
                 const double c = 2.0 * zeta * std::sqrt(k * (mi * mj / (mi + mj)) / std::min(pi.probesPerFace, pj.probesPerFace));
                 const double mu = std::sqrt(pi.friction * pj.friction);
-                probe(si, poses[i], sj, poses[j], k, c, mu, &loads[i], &loads[j]);
-                probe(sj, poses[j], si, poses[i], k, c, mu, &loads[j], &loads[i]);
+                const auto bj = static_cast<std::uint32_t>(j);
+                probe(si, poses[i], sj, poses[j], k, c, mu, &loads[i], &loads[j], bi, bj, friction);
+                probe(sj, poses[j], si, poses[i], k, c, mu, &loads[j], &loads[i], bj, bi, friction);
             }
         }
+        if (tau > 0.0) springs = std::move(next);
     }
 };
 
@@ -285,9 +336,9 @@ void BodySystem::step(double dt, std::span<const glm::dvec3> forces, std::span<c
         w0[i] = impl_->bodies[i]->angularVelocity();
     }
     std::vector<Load> loads(n);
-    auto kickAll = [&]() {
+    auto kickAll = [&](double springTau) {
         std::fill(loads.begin(), loads.end(), Load{});
-        impl_->contactLoads(loads);
+        impl_->contactLoads(loads, springTau);
         for (std::size_t i = 0; i < n; ++i) {
             RigidBody& b = *impl_->bodies[i];
             contact[i] += loads[i].force;
@@ -300,9 +351,9 @@ void BodySystem::step(double dt, std::span<const glm::dvec3> forces, std::span<c
         }
     };
     for (int s = 0; s < steps; ++s) {
-        kickAll();
+        kickAll(0.0);
         for (auto& b : impl_->bodies) b->drift(tau);
-        kickAll();
+        kickAll(tau);  // the sub-step's end: the tangential springs stretch by v_t τ
     }
     for (std::size_t i = 0; i < n; ++i) {
         RigidBody& b = *impl_->bodies[i];
@@ -314,22 +365,41 @@ void BodySystem::step(double dt, std::span<const glm::dvec3> forces, std::span<c
     }
 }
 
+// Layout: the body count, each body's RigidBody::saveState(), the count of touching probes,
+// then per probe its key (three integers, exact in double) and its tangential spring ξ.
 std::vector<double> BodySystem::saveState() const {
     std::vector<double> s{static_cast<double>(impl_->bodies.size())};
     for (const auto& b : impl_->bodies) {
         const std::vector<double> one = b->saveState();
         s.insert(s.end(), one.begin(), one.end());
     }
+    s.push_back(static_cast<double>(impl_->springs.size()));
+    for (const auto& [key, xi] : impl_->springs)
+        s.insert(s.end(), {static_cast<double>(std::get<0>(key)), static_cast<double>(std::get<1>(key)),
+                           static_cast<double>(std::get<2>(key)), xi.x, xi.y, xi.z});
     return s;
 }
 
 void BodySystem::restoreState(std::span<const double> s) {
     const std::size_t n = impl_->bodies.size();
-    if (s.size() != 1 + n * RigidBody::kStateSize || s[0] != static_cast<double>(n))
-        throw std::invalid_argument("bodies: the saved state is for " + (s.empty() ? std::string("no") : showd(s[0])) +
-                                    " bodies, this system has " + std::to_string(n));
+    const std::size_t bodiesEnd = 1 + n * RigidBody::kStateSize;
+    auto refuse = [&]() {
+        return std::invalid_argument("bodies: the saved state is for " + (s.empty() ? std::string("no") : showd(s[0])) +
+                                     " bodies or is damaged, this system has " + std::to_string(n));
+    };
+    if (s.size() < bodiesEnd + 1 || s[0] != static_cast<double>(n)) throw refuse();
+    const double count = s[bodiesEnd];
+    if (!(count >= 0.0) || s.size() != bodiesEnd + 1 + 6 * static_cast<std::size_t>(count)) throw refuse();
+    Springs springs;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(count); ++k) {
+        const double* e = s.data() + bodiesEnd + 1 + 6 * k;
+        const ContactKey key{static_cast<std::uint32_t>(e[0]), static_cast<std::uint32_t>(e[1]),
+                             static_cast<std::uint32_t>(e[2])};
+        springs[key] = glm::dvec3(e[3], e[4], e[5]);
+    }
     for (std::size_t i = 0; i < n; ++i)
         impl_->bodies[i]->restoreState(s.subspan(1 + i * RigidBody::kStateSize, RigidBody::kStateSize));
+    impl_->springs = std::move(springs);
 }
 
 }  // namespace tide::bodies
