@@ -301,6 +301,28 @@ TEST(Constraints, PlanarMotionTurnsOnlyAboutZ) {
     EXPECT_NEAR(body.angularVelocity().z, M.z / Izz * 2.0, 1e-9 * M.z / Izz * 2.0);
 }
 
+TEST(Constraints, TwoFreeRotationsNeverSpinAboutTheLockedAxis) {
+    // Rotation about z locked, about x and y free: ω has no z part, whatever the moment, and
+    // a torque-free body keeps the free components of its angular momentum.
+    BodyDef def = cubeBody(700.0, {0.0f, 0.0f, 0.0f}, 0.1f);
+    def.shape.max.y = 0.3f;
+    def.constraint = fixedAxes({"rz"});
+    def.angularVelocity = glm::dvec3(1.0, 0.5, 2.0);
+    RigidBody body(def, glm::dvec3(0.0));
+    EXPECT_EQ(body.angularVelocity().z, 0.0);
+    const glm::dvec3 L0 = body.angularMomentum();
+    for (int s = 0; s < 2000; ++s) {
+        body.step(1e-3, glm::dvec3(0.0), glm::dvec3(0.0));
+        ASSERT_EQ(body.angularVelocity().z, 0.0);
+    }
+    EXPECT_LT(glm::length(body.angularMomentum() - L0), 1e-15);
+    for (int s = 0; s < 1000; ++s) {
+        body.step(1e-3, glm::dvec3(0.0), glm::dvec3(0.01, -0.02, 0.5));
+        ASSERT_EQ(body.angularVelocity().z, 0.0);
+    }
+    EXPECT_TRUE(body.isFinite());
+}
+
 TEST(Constraints, HingeKeepsItsPointFixedAndSwingsWithThePendulumPeriod) {
     // A 0.1 × 0.4 × 0.1 box hinged about z at its top face centre, released at 3°.
     BodyDef def;
