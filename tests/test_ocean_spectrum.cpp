@@ -187,7 +187,7 @@ TEST(OceanSea, DiscretisedVarianceIsTheSpectrumsAndParsevalHolds) {
 TEST(OceanSea, RegularWaveIsOneComponent) {
     OceanDef def;
     def.depth = 0.7;
-    def.waves.type = OceanWavesDef::Type::Regular;
+    def.waves.type = OceanWavesDef::Type::Regular;  // the flume of acceptance item 3
     def.waves.height = 0.16;
     def.waves.period = 2.0;
     def.waves.direction = 90.0;  // towards +z
@@ -197,8 +197,11 @@ TEST(OceanSea, RegularWaveIsOneComponent) {
     EXPECT_NEAR(sea.components()[0].kx, 0.0, 1e-15);
     EXPECT_DOUBLE_EQ(sea.variance(), 0.08 * 0.08 / 2.0);
     // L = 2π/k on 0.7 m at T = 2 s: 4.85 m (shallow-ish water, kd = 0.91).
-    EXPECT_NEAR(peakWavelength(def), 2.0 * kPi / waveNumber(kPi, 0.7), 1e-12);
+    EXPECT_NEAR(oceanPeakWavelength(def), 2.0 * kPi / waveNumber(kPi, 0.7), 1e-12);
     EXPECT_NEAR(repeatPeriod(def), 2.0, 0.0);
+    EXPECT_EQ(oceanZoneWidth(def), oceanPeakWavelength(def));  // the default: one wavelength
+    def.zoneWidth = 3.0;
+    EXPECT_EQ(oceanZoneWidth(def), 3.0);
 }
 
 }  // namespace

@@ -44,8 +44,10 @@ struct OceanWavesDef {
 enum class OceanSide : std::uint8_t { MinusX, PlusX, MinusZ, PlusZ };
 
 /// An ocean (scene key `ocean`): the far-field sea around the near field (the domain).
+/// The sea's own coordinates have still water at y = 0 and the floor at y = −depth; in a scene
+/// the floor is the domain's, so sea y = world y − (domain.min.y + depth).
 struct OceanDef {
-    double depth = 0.0;   ///< still-water depth, m (the floor is at y = −depth below still water)
+    double depth = 0.0;   ///< still-water depth, m
     OceanWavesDef waves;  ///< the sea state
     /// Width W of the coupling zones along the open sides, m; 0 picks one peak wavelength.
     double zoneWidth = 0.0;
@@ -59,6 +61,13 @@ void validateOcean(const OceanDef& def);
 /// The JONSWAP γ a sea uses: `waves.gamma`, or DNV-RP-C205's from Tp/√Hs when it is unset
 /// (1 for Pierson–Moskowitz and regular waves).
 double oceanGamma(const OceanWavesDef& waves);
+
+/// The wavelength 2π/k at the peak period (regular waves: at the period) on the ocean's depth
+/// (ω² = g k tanh kd), m. Validates `def` first.
+double oceanPeakWavelength(const OceanDef& def, double g = 9.81);
+
+/// The coupling zones' width: `zoneWidth`, or one peak wavelength when it is 0, m.
+double oceanZoneWidth(const OceanDef& def, double g = 9.81);
 
 /// The scene key of a side: "-x", "+x", "-z", "+z".
 const char* oceanSideName(OceanSide side);

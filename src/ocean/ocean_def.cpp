@@ -2,10 +2,12 @@
 #include <tide/ocean.hpp>
 
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
+#include "ocean/dispersion.hpp"
 #include "ocean/spectrum.hpp"
 
 namespace tide {
@@ -74,6 +76,17 @@ void validateOcean(const OceanDef& def) {
 double oceanGamma(const OceanWavesDef& waves) {
     if (waves.type != OceanWavesDef::Type::Jonswap) return 1.0;
     return waves.gamma ? *waves.gamma : ocean::dnvGamma(waves.hs, waves.tp);
+}
+
+double oceanPeakWavelength(const OceanDef& def, double g) {
+    validateOcean(def);
+    const double period = def.waves.type == OceanWavesDef::Type::Regular ? def.waves.period : def.waves.tp;
+    const double twoPi = 2.0 * std::numbers::pi;
+    return twoPi / ocean::waveNumber(twoPi / period, def.depth, g);
+}
+
+double oceanZoneWidth(const OceanDef& def, double g) {
+    return def.zoneWidth > 0.0 ? def.zoneWidth : oceanPeakWavelength(def, g);
 }
 
 const char* oceanSideName(OceanSide side) {

@@ -79,12 +79,6 @@ double repeatPeriod(const OceanDef& def, SpectrumRange range) {
     return 4.0 * kPi / combOf(def.waves, range).step;
 }
 
-double peakWavelength(const OceanDef& def, double g) {
-    validateOcean(def);
-    const double period = def.waves.type == OceanWavesDef::Type::Regular ? def.waves.period : def.waves.tp;
-    return 2.0 * kPi / waveNumber(2.0 * kPi / period, def.depth, g);
-}
-
 Sea::Sea(std::vector<WaveComponent> components, double depth, double g, double density)
     : components_(std::move(components)), depth_(depth), g_(g), density_(density) {
     if (!(depth > 0.0 && std::isfinite(depth)) || !(g > 0.0 && std::isfinite(g)) ||

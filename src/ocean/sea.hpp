@@ -80,9 +80,6 @@ std::vector<WaveComponent> discretise(const OceanDef& def, double g = kGravity, 
 /// The time after which discretise(def)'s sea repeats exactly: T (regular) or 4π/δω, s.
 double repeatPeriod(const OceanDef& def, SpectrumRange range = {});
 
-/// The wavelength at the peak period (regular: at the period) on the ocean's depth, m.
-double peakWavelength(const OceanDef& def, double g = kGravity);
-
 /// A sea of linear wave components on depth d, summed directly.
 class Sea {
 public:
