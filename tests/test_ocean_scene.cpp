@@ -14,6 +14,8 @@
 #include <tide/io/scene.hpp>
 #include <tide/ocean.hpp>
 
+#include "cli_support.hpp"
+
 namespace {
 
 using namespace tide;
@@ -192,6 +194,39 @@ TEST(OceanScene, SchemaAgreesWithTheParser) {
     for (const auto& c : cases) expected += c.second ? '1' : '0';
     EXPECT_EQ(verdicts, expected);
     std::filesystem::remove_all(dir);
+}
+
+TEST(OceanScene, ValidateReportsTheWavesAndWarnsWhenTooCoarse) {
+    // `tide validate`: the peak wavelength, particles per wave height and zone widths.
+    const auto dir = tide::testing::scratch("ocean_validate");
+    std::filesystem::create_directories(dir);
+    const auto write = [&](const std::string& name, double spacing) {
+        std::string text = sceneWith(R"({"depth": 0.7, "zone_width": 1.5, "open_sides": ["-x", "+z"],
+            "waves": {"type": "regular", "height": 0.16, "period": 2, "direction": 30}})");
+        text.replace(text.find("0.1,"), 4, std::to_string(spacing) + ",");  // the particle spacing
+        std::ofstream(dir / name) << text;
+        return (dir / name).string();
+    };
+    OceanDef flume;
+    flume.depth = 0.7;
+    flume.waves.type = OceanWavesDef::Type::Regular;
+    flume.waves.height = 0.16;
+    flume.waves.period = 2.0;
+    char wavelength[64];
+    std::snprintf(wavelength, sizeof wavelength, "peak wavelength %.3g m", oceanPeakWavelength(flume));
+
+    const tide::testing::Result fine = tide::testing::run(std::string(TIDE_BIN) + " validate " + write("fine.json", 0.01));
+    EXPECT_EQ(fine.exit, 0) << fine.output;
+    EXPECT_NE(fine.output.find("ocean      depth 0.7 m: regular, H 0.16 m, T 2 s, towards 30 deg"), std::string::npos) << fine.output;
+    EXPECT_NE(fine.output.find(wavelength), std::string::npos) << fine.output;
+    EXPECT_NE(fine.output.find("16.0 particles per wave height"), std::string::npos) << fine.output;
+    EXPECT_NE(fine.output.find("zones    1.5 m on -x, +z"), std::string::npos) << fine.output;
+    EXPECT_EQ(fine.output.find("warning"), std::string::npos) << fine.output;
+
+    const tide::testing::Result coarse = tide::testing::run(std::string(TIDE_BIN) + " validate " + write("coarse.json", 0.04));
+    EXPECT_EQ(coarse.exit, 0) << coarse.output;
+    EXPECT_NE(coarse.output.find("warning: ocean: 4.0 particles per wave height"), std::string::npos) << coarse.output;
+    std::filesystem::remove_all(dir.parent_path());
 }
 
 }  // namespace
