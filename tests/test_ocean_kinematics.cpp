@@ -227,4 +227,24 @@ TEST(OceanKinematics, WheelerStretchingMapsTheColumnOntoStillWater) {
     }
 }
 
+TEST(OceanKinematics, BatchSamplingIsTheSameOnAnyThreadCount) {
+    const Sea sea = Sea::fromDef(acceptanceSea());
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i < 600; ++i) points.emplace_back(0.7 * i - 200.0, -0.05 * i + 1.0, 0.3 * i);
+    std::vector<WaterSample> one(points.size()), two(points.size());
+    sea.sample(points, 2.5, one, 1);
+    sea.sample(points, 2.5, two, 2);
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const WaterSample single = sea.sample(points[i], 2.5);
+        for (const WaterSample* w : {&one[i], &two[i]}) {
+            EXPECT_EQ(w->elevation, single.elevation);
+            EXPECT_EQ(w->pressure, single.pressure);
+            EXPECT_EQ(w->wet, single.wet);
+            for (int axis = 0; axis < 3; ++axis) EXPECT_EQ(w->velocity[axis], single.velocity[axis]);
+        }
+    }
+    std::vector<WaterSample> wrong(3);
+    EXPECT_THROW(sea.sample(points, 0.0, wrong), std::invalid_argument);
+}
+
 }  // namespace

@@ -4,9 +4,11 @@
 #include <numbers>
 #include <random>
 #include <sstream>
+#include <string>
 #include <stdexcept>
 #include <utility>
 
+#include "core/parallel.hpp"
 #include "ocean/spectrum.hpp"
 #include "ocean/uniform_random.hpp"
 
@@ -101,7 +103,7 @@ Sea::Sea(std::vector<WaveComponent> components, double depth, double g, double d
         }
         const double decay = std::exp(-2.0 * k * depth);
         const double overSinh = 1.0 / -std::expm1(-2.0 * k * depth);
-        profiles_.push_back(Profile{k, c.kx / k, c.kz / k, decay, (1.0 + decay) * overSinh, overSinh});
+        profiles_.push_back(Profile{k, c.kx / k, c.kz / k, decay, (1.0 + decay) * overSinh, overSinh, 1.0 / (1.0 + decay)});
     }
 }
 
@@ -137,8 +139,16 @@ glm::dvec2 Sea::horizontalDisplacement(double x, double z, double t) const {
 }
 
 WaterSample Sea::sample(const glm::dvec3& point, double t, Stretching stretching) const {
+    // Each phase's cosine and sine once: η needs them all before the stretched height is known.
+    thread_local std::vector<double> trig;
+    trig.resize(2 * components_.size());
     WaterSample out;
-    out.elevation = elevation(point.x, point.z, t);
+    for (std::size_t i = 0; i < components_.size(); ++i) {
+        const double theta = phaseAt(components_[i], point.x, point.z, t);
+        trig[2 * i] = std::cos(theta);
+        trig[2 * i + 1] = std::sin(theta);
+        out.elevation += components_[i].amplitude * trig[2 * i];
+    }
     double y = point.y;  // where the profiles are evaluated
     if (stretching == Stretching::Wheeler) {
         const double column = depth_ + out.elevation;
@@ -151,20 +161,29 @@ WaterSample Sea::sample(const glm::dvec3& point, double t, Stretching stretching
     for (std::size_t i = 0; i < components_.size(); ++i) {
         const WaveComponent& c = components_[i];
         const Profile& p = profiles_[i];
-        const double theta = phaseAt(c, point.x, point.z, t);
-        const double cosTheta = std::cos(theta), sinTheta = std::sin(theta);
-        // cosh(k(y+d)) and sinh(k(y+d)) over e^{kd}: e^{ky} ± e^{−k(y+2d)}
-        const double up = std::exp(p.k * y), down = std::exp(-p.k * (y + 2.0 * depth_));
-        const double horizontal = c.amplitude * c.omega * (up + down) * p.overSinh * cosTheta;
+        // cosh(k(y+d)) and sinh(k(y+d)) over e^{kd}: e^{ky} ± e^{−k(y+2d)}, the second as
+        // e^{−2kd}/e^{ky} (0 where e^{ky} underflows: then both terms are negligible).
+        const double up = std::exp(p.k * y);
+        const double down = up > 0.0 ? p.decay / up : 0.0;
+        const double horizontal = c.amplitude * c.omega * (up + down) * p.overSinh * trig[2 * i];
         out.velocity.x += horizontal * p.ux;
         out.velocity.z += horizontal * p.uz;
-        out.velocity.y += c.amplitude * c.omega * (up - down) * p.overSinh * sinTheta;
-        dynamic += c.amplitude * (up + down) / (1.0 + p.decay) * cosTheta;
+        out.velocity.y += c.amplitude * c.omega * (up - down) * p.overSinh * trig[2 * i + 1];
+        dynamic += c.amplitude * (up + down) * p.overCosh * trig[2 * i];
     }
     // Wheeler: the air above the surface is at atmospheric pressure. The linear field keeps
     // its formula everywhere (its surface condition holds at y = 0, not at η).
     out.pressure = out.wet || stretching == Stretching::None ? density_ * g_ * (dynamic - point.y) : 0.0;
     return out;
+}
+
+void Sea::sample(std::span<const glm::dvec3> points, double t, std::span<WaterSample> out, int threads,
+                 Stretching stretching) const {
+    if (out.size() != points.size())
+        throw std::invalid_argument("ocean::Sea::sample: " + std::to_string(points.size()) + " points but " +
+                                    std::to_string(out.size()) + " results");
+    parallelFor(static_cast<std::uint32_t>(points.size()), threads,
+                [&](std::uint32_t i) { out[i] = sample(points[i], t, stretching); });
 }
 
 double Sea::variance() const {

@@ -22,6 +22,7 @@
 /// satisfies the linear surface conditions at y = 0.
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -100,6 +101,10 @@ public:
     [[nodiscard]] glm::dvec2 horizontalDisplacement(double x, double z, double t) const;
     /// Velocity and pressure at `point` (x, y, z), time t.
     [[nodiscard]] WaterSample sample(const glm::dvec3& point, double t, Stretching stretching = Stretching::Wheeler) const;
+    /// sample() at every point, on `threads` threads (parallelFor: the same results for any
+    /// count). `out` must have the size of `points` (else std::invalid_argument).
+    void sample(std::span<const glm::dvec3> points, double t, std::span<WaterSample> out, int threads = 1,
+                Stretching stretching = Stretching::Wheeler) const;
 
     /// Σ a²/2: the variance of η (m²) over space or, with distinct frequencies, over time.
     [[nodiscard]] double variance() const;
@@ -116,6 +121,7 @@ private:
         double decay;    // e^(−2kd)
         double coth;     // coth(kd)
         double overSinh; // e^{kd}/sinh(kd) = 1/(1 − e^(−2kd))
+        double overCosh; // e^{kd}/cosh(kd) = 1/(1 + e^(−2kd))
     };
     [[nodiscard]] double phaseAt(const WaveComponent& c, double x, double z, double t) const;
 
