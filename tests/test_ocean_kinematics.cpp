@@ -14,6 +14,7 @@
 #include "ocean/dispersion.hpp"
 #include "ocean/sea.hpp"
 #include "ocean/sea_grid_tessendorf2001.hpp"
+#include "ocean/spectrum.hpp"
 
 namespace {
 
@@ -113,6 +114,43 @@ TEST(OceanGrid, FftAgreesWithTheDirectSum) {
     double square = 0.0;
     for (const double eta : fft.elevation()) square += eta * eta / static_cast<double>(fft.elevation().size());
     EXPECT_GT(square, 0.5 * sea.variance());
+}
+
+TEST(OceanGrid, GridSeaHoldsTheSpectrumsVarianceAndDirection) {
+    // Tessendorf's sampling of the directional wave-number spectrum at every grid wave vector:
+    // a 16 λp square at 256² reaches k = 8 kp (ω = 2.83 ωp in deep water) along the axes and
+    // √2 more in the corners, so Σ a²/2 lies between the spectrum's m0 up to those two
+    // frequencies (each from 0.2 ωp), less the quadrature's error on the peak (2 %).
+    OceanDef def = acceptanceSea();
+    def.depth = 400.0;  // deep: ω = √(g k)
+    def.waves.gamma = 3.3;
+    const double wp = 2.0 * kPi / def.waves.tp, kp = wp * wp / g;
+    GridSpec grid{16.0 * 2.0 * kPi / kp, 16.0 * 2.0 * kPi / kp, 256, 256, {0.0, 0.0}};
+    const Sea sea = gridSea(def, grid);
+    const auto m0 = [&](double highest) {
+        const int n = 20000;
+        const double a = 0.2 * wp, h = (highest - a) / n;
+        double sum = 0.0;
+        for (int i = 0; i <= n; ++i)
+            sum += (i == 0 || i == n ? 1.0 : (i % 2 ? 4.0 : 2.0)) * jonswap(a + i * h, 2.5, 7.0, 3.3);
+        return sum * h / 3.0;
+    };
+    const double lower = m0(std::sqrt(g * 8.0 * kp)), upper = m0(std::sqrt(g * 8.0 * std::sqrt(2.0) * kp));
+    std::printf("grid sea: sum a^2/2 = %.4f m^2, m0 up to the axes' and the corners' k: %.4f, %.4f\n", sea.variance(), lower, upper);
+    EXPECT_GT(sea.variance(), 0.98 * lower);
+    EXPECT_LT(sea.variance(), 1.02 * upper);
+    double sx = 0.0, sz = 0.0;
+    for (const WaveComponent& c : sea.components()) {
+        const double k = std::hypot(c.kx, c.kz);
+        sx += c.amplitude * c.amplitude * c.kx / k;
+        sz += c.amplitude * c.amplitude * c.kz / k;
+    }
+    EXPECT_NEAR(std::atan2(sz, sx) * 180.0 / kPi, 30.0, 0.5);
+    // It lives on the grid: SeaGrid takes it as it is.
+    SeaGrid fft(sea, grid);
+    fft.update(1.0);
+    const glm::dvec2 p = fft.position(17, 201);
+    EXPECT_NEAR(fft.elevation()[201 * 256 + 17], sea.elevation(p.x, p.y, 1.0), 1e-5 * def.waves.hs);
 }
 
 TEST(OceanGrid, RefusesComponentsOffItsWaveVectors) {

@@ -2,10 +2,14 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 
 #include <kissfft.hh>
+
+#include "ocean/spectrum.hpp"
+#include "ocean/uniform_random.hpp"
 
 namespace tide::ocean {
 
@@ -42,6 +46,36 @@ Sea snapToGrid(const Sea& sea, const GridSpec& grid) {
         snapped.push_back(c);
     }
     return Sea(std::move(snapped), sea.depth(), sea.gravity(), sea.density());
+}
+
+Sea gridSea(const OceanDef& def, const GridSpec& grid, double g) {
+    validateOcean(def);
+    checkGrid(grid);
+    const OceanWavesDef& w = def.waves;
+    if (!w.spreading) return snapToGrid(Sea(discretise(def, g), def.depth, g), grid);
+    const Cos2sSpreading spreading(*w.spreading);
+    const double gamma = oceanGamma(w), mean = w.direction * std::numbers::pi / 180.0, d = def.depth;
+    const double dkx = kTwoPi / grid.lengthX, dkz = kTwoPi / grid.lengthZ;
+    std::mt19937_64 random(w.seed);
+    std::vector<WaveComponent> components;
+    for (int j = 0; j < grid.pointsZ; ++j) {
+        for (int i = 0; i < grid.pointsX; ++i) {
+            const double phase = kTwoPi * uniform01(random);  // drawn for every bin: the order is fixed
+            const long mx = i < grid.pointsX / 2 ? i : i - grid.pointsX;
+            const long mz = j < grid.pointsZ / 2 ? j : j - grid.pointsZ;
+            if ((mx == 0 && mz == 0) || !interiorIndex(mx, grid.pointsX) || !interiorIndex(mz, grid.pointsZ)) continue;
+            const double kx = dkx * static_cast<double>(mx), kz = dkz * static_cast<double>(mz);
+            const double k = std::hypot(kx, kz), kd = k * d;
+            const double omega = angularFrequency(k, d, g);
+            // c_g = ω/(2k) (1 + 2kd/sinh 2kd); the ratio written to stay finite in deep water.
+            const double ratio = kd < 350.0 ? 2.0 * kd / std::sinh(2.0 * kd) : 0.0;
+            const double groupSpeed = omega / (2.0 * k) * (1.0 + ratio);
+            const double density = jonswap(omega, w.hs, w.tp, gamma) * spreading(std::atan2(kz, kx) - mean) * groupSpeed / k;
+            const double amplitude = std::sqrt(2.0 * density * dkx * dkz);
+            if (amplitude > 0.0) components.push_back(WaveComponent{amplitude, omega, kx, kz, phase});
+        }
+    }
+    return Sea(std::move(components), d, g);
 }
 
 struct SeaGrid::Transforms {
