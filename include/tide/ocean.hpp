@@ -27,11 +27,11 @@ struct OceanWavesDef {
     /// Mean direction the waves travel towards, degrees from +x towards +z, in [−360, 360].
     double direction = 0.0;
     /// s of the cos-2s spreading D(θ) ∝ cos^{2s}((θ − θ̄)/2) (Longuet-Higgins et al. 1963), in
-    /// (0, 1000]; larger is narrower (wind sea ~10, swell ~75, Goda 2000 §2.3). None: long-crested.
+    /// (0, 1000]; larger is narrower (wind sea ~10, swell ~75, Goda 2000, ch. 2). None: long-crested.
     std::optional<double> spreading;
     /// JONSWAP peak enhancement γ in [1, 7] (the range of DNV-RP-C205's normalisation A_γ, which
     /// holds Hs within 0.2 % up to γ = 5 and 0.9 % at 7). None:
-    /// DNV-RP-C205 eq. (3.5.5.5) from Tp/√Hs (5 below 3.6, exp(5.75 − 1.15 Tp/√Hs) up to 5, then 1).
+    /// DNV-RP-C205 (2010) §3.5.5's rule from Tp/√Hs (5 below 3.6, exp(5.75 − 1.15 Tp/√Hs) up to 5, then 1).
     std::optional<double> gamma;
     std::uint64_t seed = 0;  ///< the random phases (the same seed gives the same sea everywhere)
     /// Spectra: frequency bands, in [1, 4096] (regular waves have one component).

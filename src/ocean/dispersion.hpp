@@ -9,7 +9,7 @@ inline constexpr double kGravity = 9.81;  ///< m/s², the g of the ocean unless 
 /// Wave number k (rad/m) of angular frequency ω on depth d: Newton's method on
 /// f(k) = g k tanh(kd) − ω² from Fenton & McKee's explicit approximation
 /// k ≈ (ω²/g) / tanh((ω √(d/g))^{3/2})^{2/3} (Fenton & McKee 1990, "On calculating the lengths
-/// of water waves", Coastal Engineering 14, eq. 2; within 1.7 % everywhere), to machine
+/// of water waves", Coastal Engineering 14; within 1.7 % everywhere), to machine
 /// precision (relative residual below 1e-14 in tests). Throws std::invalid_argument unless
 /// ω, d and g are > 0 and finite.
 double waveNumber(double omega, double depth, double g = kGravity);

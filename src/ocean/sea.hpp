@@ -6,7 +6,8 @@
 /// Coordinates are tide's: y up, still water at y = 0, the floor at y = −d, the surface the
 /// x–z plane. A component of amplitude a, wave vector k = k (cos β, sin β) (β from +x towards +z)
 /// and phase φ has the phase θ = kx x + kz z − ω t + φ and, with ω² = g k tanh(kd)
-/// (Dean & Dalrymple 1991, "Water wave mechanics for engineers and scientists", §3.4, Table 4.1):
+/// (small-amplitude wave theory; Dean & Dalrymple 1991, "Water wave mechanics for engineers and
+/// scientists", ch. 3–4):
 ///   η = a cos θ
 ///   u_h = a ω cosh(k(y+d))/sinh(kd) cos θ · k/|k|          (horizontal, along the wave)
 ///   v   = a ω sinh(k(y+d))/sinh(kd) sin θ                   (vertical)
@@ -18,7 +19,7 @@
 /// a point at height y under the local surface η is evaluated at y' = d (y + d)/(d + η) − d,
 /// so the surface maps to y' = 0 and the floor to itself; the pressure at the surface is then
 /// exactly 0. Stretching is applied over the whole column, as Wheeler (and DNV-RP-C205
-/// §3.3.3) do; the unstretched linear field (Stretching::None) is exactly divergence-free and
+/// describe it) do; the unstretched linear field (Stretching::None) is exactly divergence-free and
 /// satisfies the linear surface conditions at y = 0.
 
 #include <cstdint>

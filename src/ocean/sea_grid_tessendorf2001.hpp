@@ -34,7 +34,7 @@ struct GridSpec {
 /// k = 0 or on a Nyquist wave number (|m| = N/2), which the grid cannot carry, are dropped.
 Sea snapToGrid(const Sea& sea, const GridSpec& grid);
 
-/// A sea sampled at every interior wave vector of `grid`, as Tessendorf 2001 §4.3 does for
+/// A sea sampled at every interior wave vector of `grid`, as Tessendorf 2001 does for
 /// rendering (every bin filled, not only those a discretise() sea lands on): for a spread
 /// sea, each bin k gets the amplitude a = √(2 F(k) Δkx Δkz) of the directional wave-number
 /// spectrum F(k) = S(ω) D(θ) c_g / k (S dω dθ = F k dk dθ, dω = c_g dk; Dean & Dalrymple 1991

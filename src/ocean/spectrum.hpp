@@ -7,7 +7,7 @@
 /// environmental loads", §3.5.5, writes them (the JONSWAP shape of Hasselmann et al. 1973,
 /// "Measurements of wind-wave growth and swell decay during the Joint North Sea Wave Project",
 /// Dtsch. Hydrogr. Z. A8(12), normalised to Hs with Goda's factor, Goda 2000, "Random seas and
-/// design of maritime structures", §2.3):
+/// design of maritime structures", ch. 2):
 ///   S_PM(ω) = 5/16 Hs² ωp⁴ ω⁻⁵ exp(−5/4 (ω/ωp)⁻⁴),                    ωp = 2π/Tp
 ///   S_J(ω)  = A_γ S_PM(ω) γ^exp(−½ ((ω − ωp)/(σ ωp))²),  A_γ = 1 − 0.287 ln γ,
 ///   σ = 0.07 for ω ≤ ωp, 0.09 above.
@@ -31,7 +31,7 @@ double dnvGamma(double hs, double tp);
 
 /// The cos-2s directional spreading function of Longuet-Higgins, Cartwright & Smith 1963
 /// ("Observations of the directional spectrum of sea waves using the motions of a floating
-/// buoy"), as in Goda 2000 §2.3:
+/// buoy"), as in Goda 2000, ch. 2:
 ///   D(θ) = G(s) cos^{2s}((θ − θ̄)/2),  G(s) = 2^{2s−1} Γ²(s+1) / (π Γ(2s+1)),
 /// for θ − θ̄ in [−π, π], so ∫ D dθ = 1 over the circle.
 class Cos2sSpreading {
