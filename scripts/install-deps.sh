@@ -4,7 +4,7 @@
 set -euo pipefail
 
 # build: compiler, CMake, GLM, JSON, CLI11, tinyobjloader (OBJ obstacle meshes), Highway (SIMD
-# with run-time dispatch), OpenVDB (the obj format's surface meshes; with TBB, Imath and Boost's
+# with run-time dispatch), kissfft (the ocean's FFT grid), OpenVDB (the obj format's surface meshes; with TBB, Imath and Boost's
 # headers, which its headers use); tests: GoogleTest,
 # meshio (reads our VTU frames), jsonschema (checks scenes against their schema), script (a
 # pseudo-terminal); benchmarks: Google Benchmark.
@@ -13,7 +13,7 @@ set -euo pipefail
 # ffmpeg for `tide render --video`; the viewer's test: Xvfb and xwd (x11-apps).
 # `make check-sanitizers`: clang with its sanitizer and libFuzzer runtimes (libclang-rt-14-dev),
 # LLVM's OpenMP (libomp-dev, whose Archer tool makes TSan understand OpenMP), llvm-symbolizer (llvm).
-packages=(cmake make g++ libglm-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libhwy-dev
+packages=(cmake make g++ libglm-dev libkissfft-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libhwy-dev
           libopenvdb-dev libtbb-dev libimath-dev libboost-dev libgtest-dev libgmock-dev
           libbenchmark-dev python3-meshio python3-jsonschema bsdutils
           libglfw3-dev libglew-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libglx-mesa0 libgl1-mesa-dri

@@ -3,7 +3,10 @@
 #include <cstdio>
 #include <string>
 
+#include <glm/geometric.hpp>
+
 #include <tide/io/scene.hpp>
+#include <tide/ocean.hpp>
 #include <tide/triangle_mesh.hpp>
 
 #include "commands.hpp"
@@ -66,6 +69,45 @@ std::string describeMotion(const MotionDef& m) {
         out += text;
     }
     return out;
+}
+
+/// The ocean's sea state, its peak wavelength, particles per wave height and zones, with a
+/// warning where the spacing is too coarse to hold the waves.
+void reportOcean(const OceanDef& o, const WorldDef& w) {
+    const OceanWavesDef& waves = o.waves;
+    const double g = glm::length(glm::dvec3(w.gravity));
+    const double wavelength = oceanPeakWavelength(o, g);
+    const double height = waves.type == OceanWavesDef::Type::Regular ? waves.height : waves.hs;
+    const double spacing = w.particleSpacing;
+    if (waves.type == OceanWavesDef::Type::Regular) {
+        std::printf("ocean      depth %g m: regular, H %g m, T %g s, towards %g deg\n", o.depth, waves.height,
+                    waves.period, waves.direction);
+    } else {
+        const bool jonswap = waves.type == OceanWavesDef::Type::Jonswap;
+        std::printf("ocean      depth %g m: %s, Hs %g m, Tp %g s", o.depth, jonswap ? "JONSWAP" : "Pierson-Moskowitz",
+                    waves.hs, waves.tp);
+        if (jonswap) std::printf(", gamma %.3g%s", oceanGamma(waves), waves.gamma ? "" : " (DNV-RP-C205 from Tp/sqrt(Hs))");
+        if (waves.spreading)
+            std::printf(", cos-2s s %g about %g deg, %d x %d components\n", *waves.spreading, waves.direction,
+                        waves.components, waves.directions > 0 ? waves.directions : 16);
+        else
+            std::printf(", long-crested towards %g deg, %d components\n", waves.direction, waves.components);
+    }
+    std::printf("  waves    peak wavelength %.3g m (%.0f particle spacings), %.1f particles per wave height%s\n",
+                wavelength, wavelength / spacing, height / spacing,
+                waves.type == OceanWavesDef::Type::Regular ? "" : " (Hs)");
+    std::string sides;
+    for (const OceanSide side : o.openSides) sides += std::string(sides.empty() ? "" : ", ") + oceanSideName(side);
+    if (sides.empty())
+        std::printf("  zones    none: no open sides\n");
+    else
+        std::printf("  zones    %.3g m%s on %s\n", oceanZoneWidth(o, g), o.zoneWidth > 0.0 ? "" : " (one peak wavelength)",
+                    sides.c_str());
+    std::printf("  note     the far field is parsed and checked; its coupling to the particles is not simulated yet\n");
+    // Acceptance item 3 of the ocean's issue asks for at least 10 particles per wave height.
+    if (height / spacing < 10.0)
+        std::fprintf(stderr, "tide: warning: ocean: %.1f particles per wave height (%g m / %g m): fewer than 10 "
+                             "damp the waves; make particle_spacing smaller\n", height / spacing, height, spacing);
 }
 
 }  // namespace
@@ -131,6 +173,7 @@ int validateCommand(const std::string& file) {
                         wm.x, wm.depth, wm.spectrum.type == WaveSpectrumDef::Type::Jonswap ? "JONSWAP" : "Pierson-Moskowitz",
                         wm.spectrum.significantHeight, wm.spectrum.peakPeriod, wm.spectrum.components, wm.rampTime);
     }
+    if (scene.ocean) reportOcean(*scene.ocean, scene.world);
     if (!scene.dampingZones.empty() || !scene.gauges.empty() || !scene.probes.empty())
         std::printf("measuring  %zu damping zone%s, %zu gauge%s, %zu probe%s\n", scene.dampingZones.size(),
                     scene.dampingZones.size() == 1 ? "" : "s", scene.gauges.size(), scene.gauges.size() == 1 ? "" : "s",

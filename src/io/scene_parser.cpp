@@ -709,6 +709,159 @@ void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool dom
     if (ok) scene.waveMakers.push_back(w);
 }
 
+/// A whole number in [lo, hi] at obj[key] (absent: nothing, no problem).
+std::optional<double> wholeNumber(Reader& r, const json& obj, const char* key, const std::string& path, double lo, double hi) {
+    const auto v = r.number(obj, key, path, false, lo, hi);
+    if (v && *v != std::floor(*v)) {
+        r.fail(join(path, key), "must be a whole number, got " + show(obj.at(key)));
+        return std::nullopt;
+    }
+    return v;
+}
+
+/// "ocean": the far-field sea around the near field (the domain): depth, waves, zone_width,
+/// open_sides (issue 43's contract keys). Lengths scaled by `scale`.
+void readOcean(Reader& r, const json& j, Scene& scene, float scale, bool domainOk) {
+    const std::string path = "ocean";
+    if (!r.object(j, path, {"depth", "waves", "zone_width", "open_sides"})) return;
+    OceanDef def;
+    bool ok = true;
+    if (auto v = r.number(j, "depth", path, true, 0.0, 1e300, true)) def.depth = *v * scale;
+    else ok = false;
+    if (auto v = r.number(j, "zone_width", path, false, 0.0, 1e300)) def.zoneWidth = *v * scale;
+    else ok = ok && !j.contains("zone_width");
+
+    const json& sides = r.array(j, "open_sides", path, false);
+    const std::vector<std::string> sideNames{"-x", "+x", "-z", "+z"};
+    for (std::size_t i = 0; i < sides.size(); ++i) {
+        const std::string where = indexed("ocean.open_sides", i);
+        const auto found = sides[i].is_string()
+                               ? std::find(sideNames.begin(), sideNames.end(), sides[i].get<std::string>())
+                               : sideNames.end();
+        if (found == sideNames.end()) {
+            r.fail(where, "must be \"-x\", \"+x\", \"-z\" or \"+z\", got " + show(sides[i]) +
+                              (sides[i].is_string() ? suggestion(sides[i].get<std::string>(), sideNames) : ""));
+            ok = false;
+            continue;
+        }
+        def.openSides.push_back(static_cast<OceanSide>(found - sideNames.begin()));
+    }
+
+    const std::string wp = "ocean.waves";
+    if (!j.contains("waves")) {
+        r.fail(wp, "missing (required)");
+        return;
+    }
+    const json& w = j.at("waves");
+    if (!r.object(w, wp, {"type", "height", "period", "hs", "tp", "direction", "spreading", "gamma", "seed",
+                          "components", "directions"}))
+        return;
+    OceanWavesDef& waves = def.waves;
+    const std::vector<std::string> types{"regular", "jonswap", "pierson_moskowitz"};
+    const auto type = r.string(w, "type", wp, true);
+    if (!type) return;
+    if (*type == "regular") waves.type = OceanWavesDef::Type::Regular;
+    else if (*type == "jonswap") waves.type = OceanWavesDef::Type::Jonswap;
+    else if (*type == "pierson_moskowitz") waves.type = OceanWavesDef::Type::PiersonMoskowitz;
+    else {
+        r.fail(join(wp, "type"), "must be \"regular\", \"jonswap\" or \"pierson_moskowitz\", got \"" + *type + "\"" +
+                                     suggestion(*type, types));
+        return;
+    }
+    const bool regular = waves.type == OceanWavesDef::Type::Regular;
+    // Keys of the other kind of sea are mistakes, not ignored.
+    static const std::vector<const char*> spectrumKeys{"hs", "tp", "gamma", "spreading", "components", "directions"};
+    static const std::vector<const char*> regularKeys{"height", "period"};
+    for (const char* key : regular ? spectrumKeys : regularKeys)
+        if (w.contains(key)) {
+            r.fail(join(wp, key), std::string("does not apply to ") + (regular ? "regular waves" : "a spectrum (type \"" + *type + "\")"));
+            ok = false;
+        }
+    if (regular) {
+        if (auto v = r.number(w, "height", wp, true, 0.0, 1e300, true)) waves.height = *v * scale;
+        else ok = false;
+        if (auto v = r.number(w, "period", wp, true, 0.0, 1e300, true)) waves.period = *v;
+        else ok = false;
+    } else {
+        if (auto v = r.number(w, "hs", wp, true, 0.0, 1e300, true)) waves.hs = *v * scale;
+        else ok = false;
+        if (auto v = r.number(w, "tp", wp, true, 0.0, 1e300, true)) waves.tp = *v;
+        else ok = false;
+        if (w.contains("gamma")) {
+            if (waves.type != OceanWavesDef::Type::Jonswap) {
+                r.fail(join(wp, "gamma"), "applies to a jonswap spectrum (pierson_moskowitz has gamma 1)");
+                ok = false;
+            } else if (auto v = r.number(w, "gamma", wp, false, 1.0, 7.0)) {
+                waves.gamma = *v;
+            } else {
+                ok = false;
+            }
+        }
+        if (w.contains("spreading")) {
+            if (auto v = r.number(w, "spreading", wp, false, 0.0, 1000.0, true)) waves.spreading = *v;
+            else ok = false;
+        }
+        if (auto v = wholeNumber(r, w, "components", wp, 1.0, 4096.0)) waves.components = static_cast<int>(*v);
+        else ok = ok && !w.contains("components");
+        if (auto v = wholeNumber(r, w, "directions", wp, 0.0, 360.0)) waves.directions = static_cast<int>(*v);
+        else ok = ok && !w.contains("directions");
+    }
+    if (auto v = r.number(w, "direction", wp, false, -360.0, 360.0)) waves.direction = *v;
+    else ok = ok && !w.contains("direction");
+    if (auto v = wholeNumber(r, w, "seed", wp, 0.0, 9007199254740992.0)) waves.seed = static_cast<std::uint64_t>(*v);
+    else ok = ok && !w.contains("seed");
+    if (!ok) return;
+
+    // What only the whole definition tells (directions without spreading, a side twice).
+    try {
+        validateOcean(def);
+    } catch (const std::invalid_argument& e) {
+        r.problems.push_back(e.what());
+        return;
+    }
+    const WorldDef& world = scene.world;
+    if (domainOk) {
+        const float height = world.domainMax.y - world.domainMin.y;
+        if (def.depth > height) {
+            std::ostringstream msg;
+            msg << "must not exceed the domain height " << height / scale << ", got " << j.at("depth").dump();
+            r.fail("ocean.depth", msg.str());
+            return;
+        }
+        const double g = std::max(1e-6, static_cast<double>(glm::length(world.gravity)));
+        const double width = oceanZoneWidth(def, g);
+        bool tooWide[3] = {false, false, false};  // reported once per axis
+        for (std::size_t i = 0; i < def.openSides.size(); ++i) {
+            const OceanSide side = def.openSides[i];
+            const int axis = side == OceanSide::MinusX || side == OceanSide::PlusX ? 0 : 2;
+            const char* axisName = axis == 0 ? "x" : "z";
+            const std::string where = indexed("ocean.open_sides", i);
+            if (world.periodic[axis]) {
+                r.fail(where, std::string(oceanSideName(side)) + " is on the periodic " + axisName +
+                                  " axis (domain.periodic): it cannot also be open");
+                continue;
+            }
+            if (side == OceanSide::MinusX && !scene.waveMakers.empty()) {
+                r.fail(where, "-x has the wave maker (wavemaker) on it: a side is either open or a paddle");
+                continue;
+            }
+            // The zones of both faces of an axis must fit in the region side by side.
+            const auto opposite = static_cast<OceanSide>(static_cast<int>(side) ^ 1);
+            const bool both = std::find(def.openSides.begin(), def.openSides.end(), opposite) != def.openSides.end();
+            const double extent = world.domainMax[axis] - world.domainMin[axis];
+            if ((both ? 2.0 : 1.0) * width > extent && !tooWide[axis]) {
+                tooWide[axis] = true;
+                std::ostringstream msg;
+                msg << "its zone (zone_width " << width / scale << (def.zoneWidth > 0.0 ? "" : ", one peak wavelength")
+                    << (both ? ", twice: both faces of " : " along ") << axisName << ") is wider than the domain's "
+                    << extent / scale << " along " << axisName;
+                r.fail(def.zoneWidth > 0.0 ? "ocean.zone_width" : where, msg.str());
+            }
+        }
+    }
+    scene.ocean = def;
+}
+
 /// "damping": one zone or a list of zones.
 void readDamping(Reader& r, const json& j, Scene& scene, float scale) {
     const auto readZone = [&](const json& z, const std::string& path) {
@@ -833,7 +986,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     Reader r;
     Scene scene;
     if (!r.object(root, "", {"name", "unit_scale", "domain", "gravity", "particle_spacing", "end_time", "settle", "solver",
-                             "materials", "material_pairs", "blocks", "emitters", "obstacles", "wavemaker", "damping", "gauges", "probes", "output", "camera"}))
+                             "materials", "material_pairs", "blocks", "emitters", "obstacles", "wavemaker", "damping", "ocean", "gauges", "probes", "output", "camera"}))
         throw SceneError(r.problems);
 
     float scale = 1.0f;
@@ -911,6 +1064,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
 
     if (root.contains("wavemaker")) readWaveMaker(r, root["wavemaker"], scene, scale, domainOk);
     if (root.contains("damping")) readDamping(r, root["damping"], scene, scale);
+    if (root.contains("ocean")) readOcean(r, root["ocean"], scene, scale, domainOk);
     readGaugesAndProbes(r, root, scene, scale, domainOk);
 
     const json& blocks = r.array(root, "blocks", "", false);

@@ -14,6 +14,7 @@
 
 #include <tide/defs.hpp>
 #include <tide/io/exporters.hpp>
+#include <tide/ocean.hpp>
 #include <tide/world.hpp>
 
 namespace tide::io {
@@ -58,6 +59,7 @@ struct Scene {
     std::vector<EmitterDef> emitters;
     std::vector<WaveMakerDef> waveMakers;     ///< key "wavemaker"
     std::vector<DampingZoneDef> dampingZones; ///< key "damping"
+    std::optional<OceanDef> ocean;            ///< key "ocean": the far-field sea (issue 43); parsed, not yet simulated
     std::vector<GaugeDef> gauges;
     std::vector<ProbeDef> probes;
     OutputDef output;

@@ -1,0 +1,76 @@
+#pragma once
+/// \file
+/// The far-field sea of an ocean scene (scene key `"ocean"`): a still-water depth, a sea state
+/// (regular waves or a directional JONSWAP / Pierson–Moskowitz spectrum) and the near field's
+/// coupling zones. Plain definition structs, validated by tide::validateOcean (and whenever a
+/// sea is made from them). Lengths in m, periods in s, directions in degrees from +x towards +z
+/// (tide is y-up: the sea surface is the x–z plane, still water at y = 0).
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace tide {
+
+/// The sea state of an ocean (scene key `ocean.waves`).
+struct OceanWavesDef {
+    enum class Type {
+        Regular,           ///< one sinusoid: `height`, `period`
+        Jonswap,           ///< JONSWAP spectrum (Hasselmann et al. 1973): `hs`, `tp`, `gamma`
+        PiersonMoskowitz,  ///< Pierson & Moskowitz 1964: `hs`, `tp` (JONSWAP with γ = 1)
+    };
+    Type type = Type::Jonswap;
+    double height = 0.0;  ///< regular: H, crest to trough, m
+    double period = 0.0;  ///< regular: T, s
+    double hs = 0.0;      ///< spectra: significant wave height Hm0 = 4 √m0, m
+    double tp = 0.0;      ///< spectra: peak period, s
+    /// Mean direction the waves travel towards, degrees from +x towards +z, in [−360, 360].
+    double direction = 0.0;
+    /// s of the cos-2s spreading D(θ) ∝ cos^{2s}((θ − θ̄)/2) (Longuet-Higgins et al. 1963), in
+    /// (0, 1000]; larger is narrower (wind sea ~10, swell ~75, Goda 2000, ch. 2). None: long-crested.
+    std::optional<double> spreading;
+    /// JONSWAP peak enhancement γ in [1, 7] (the range of DNV-RP-C205's normalisation A_γ, which
+    /// holds Hs within 0.2 % up to γ = 5 and 0.9 % at 7). None:
+    /// DNV-RP-C205 (2010) §3.5.5's rule from Tp/√Hs (5 below 3.6, exp(5.75 − 1.15 Tp/√Hs) up to 5, then 1).
+    std::optional<double> gamma;
+    std::uint64_t seed = 0;  ///< the random phases (the same seed gives the same sea everywhere)
+    /// Spectra: frequency bands, in [1, 4096] (regular waves have one component).
+    int components = 64;
+    /// Spectra with spreading: directions per frequency band, in [1, 360]; 0 picks 16
+    /// (1 when long-crested, where it must be 0 or 1).
+    int directions = 0;
+};
+
+/// A face of the near field that the far field's waves enter and leave through.
+enum class OceanSide : std::uint8_t { MinusX, PlusX, MinusZ, PlusZ };
+
+/// An ocean (scene key `ocean`): the far-field sea around the near field (the domain).
+/// The sea's own coordinates have still water at y = 0 and the floor at y = −depth; in a scene
+/// the floor is the domain's, so sea y = world y − (domain.min.y + depth).
+struct OceanDef {
+    double depth = 0.0;   ///< still-water depth, m
+    OceanWavesDef waves;  ///< the sea state
+    /// Width W of the coupling zones along the open sides, m; 0 picks one peak wavelength.
+    double zoneWidth = 0.0;
+    std::vector<OceanSide> openSides;  ///< the faces open to the far field (the others stay walls)
+};
+
+/// Throws std::invalid_argument naming the field and the value (as the scene's JSON path,
+/// e.g. "ocean.waves.hs: must be > 0, got -1") if `def` cannot make a sea.
+void validateOcean(const OceanDef& def);
+
+/// The JONSWAP γ a sea uses: `waves.gamma`, or DNV-RP-C205's from Tp/√Hs when it is unset
+/// (1 for Pierson–Moskowitz and regular waves).
+double oceanGamma(const OceanWavesDef& waves);
+
+/// The wavelength 2π/k at the peak period (regular waves: at the period) on the ocean's depth
+/// (ω² = g k tanh kd), m. Validates `def` first.
+double oceanPeakWavelength(const OceanDef& def, double g = 9.81);
+
+/// The coupling zones' width: `zoneWidth`, or one peak wavelength when it is 0, m.
+double oceanZoneWidth(const OceanDef& def, double g = 9.81);
+
+/// The scene key of a side: "-x", "+x", "-z", "+z".
+const char* oceanSideName(OceanSide side);
+
+}  // namespace tide

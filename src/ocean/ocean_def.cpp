@@ -1,0 +1,102 @@
+// Validation of the ocean's definition structs (include/tide/ocean.hpp).
+#include <tide/ocean.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include "ocean/dispersion.hpp"
+#include "ocean/spectrum.hpp"
+
+namespace tide {
+
+namespace {
+
+template <class T>
+[[noreturn]] void refuse(const std::string& field, const std::string& what, T value) {
+    std::ostringstream message;
+    message << field << ": " << what << ", got " << value;
+    throw std::invalid_argument(message.str());
+}
+
+void requirePositive(const std::string& field, double v) {
+    if (!(v > 0.0) || !std::isfinite(v)) refuse(field, "must be > 0", v);
+}
+
+void requireInRange(const std::string& field, double v, double lo, double hi) {
+    if (!(v >= lo && v <= hi)) {
+        std::ostringstream what;
+        what << "must be in [" << lo << ", " << hi << "]";
+        refuse(field, what.str(), v);
+    }
+}
+
+void validateWaves(const OceanWavesDef& w) {
+    const std::string path = "ocean.waves.";
+    requireInRange(path + "direction", w.direction, -360.0, 360.0);
+    if (w.type == OceanWavesDef::Type::Regular) {
+        requirePositive(path + "height", w.height);
+        requirePositive(path + "period", w.period);
+        if (w.spreading) refuse(path + "spreading", "applies to spectra, not to regular waves", *w.spreading);
+        if (w.gamma) refuse(path + "gamma", "applies to a jonswap spectrum, not to regular waves", *w.gamma);
+        return;
+    }
+    requirePositive(path + "hs", w.hs);
+    requirePositive(path + "tp", w.tp);
+    if (w.gamma) {
+        if (w.type == OceanWavesDef::Type::PiersonMoskowitz)
+            refuse(path + "gamma", "applies to a jonswap spectrum (pierson_moskowitz has gamma 1)", *w.gamma);
+        requireInRange(path + "gamma", *w.gamma, 1.0, 7.0);
+    }
+    if (w.spreading) {
+        if (!(*w.spreading > 0.0 && *w.spreading <= 1000.0))
+            refuse(path + "spreading", "must be in (0, 1000]", *w.spreading);
+        if (w.directions != 0) requireInRange(path + "directions", w.directions, 1, 360);
+    } else if (w.directions > 1 || w.directions < 0) {
+        refuse(path + "directions", "must be 0 or 1 for a long-crested sea (no spreading)", w.directions);
+    }
+    requireInRange(path + "components", w.components, 1, 4096);
+}
+
+}  // namespace
+
+void validateOcean(const OceanDef& def) {
+    requirePositive("ocean.depth", def.depth);
+    validateWaves(def.waves);
+    if (!(def.zoneWidth >= 0.0) || !std::isfinite(def.zoneWidth))
+        refuse("ocean.zone_width", "must be >= 0 (0: one peak wavelength)", def.zoneWidth);
+    for (std::size_t i = 0; i < def.openSides.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (def.openSides[i] == def.openSides[j])
+                refuse("ocean.open_sides[" + std::to_string(i) + "]", "is listed twice", oceanSideName(def.openSides[i]));
+}
+
+double oceanGamma(const OceanWavesDef& waves) {
+    if (waves.type != OceanWavesDef::Type::Jonswap) return 1.0;
+    return waves.gamma ? *waves.gamma : ocean::dnvGamma(waves.hs, waves.tp);
+}
+
+double oceanPeakWavelength(const OceanDef& def, double g) {
+    validateOcean(def);
+    const double period = def.waves.type == OceanWavesDef::Type::Regular ? def.waves.period : def.waves.tp;
+    const double twoPi = 2.0 * std::numbers::pi;
+    return twoPi / ocean::waveNumber(twoPi / period, def.depth, g);
+}
+
+double oceanZoneWidth(const OceanDef& def, double g) {
+    return def.zoneWidth > 0.0 ? def.zoneWidth : oceanPeakWavelength(def, g);
+}
+
+const char* oceanSideName(OceanSide side) {
+    switch (side) {
+        case OceanSide::MinusX: return "-x";
+        case OceanSide::PlusX: return "+x";
+        case OceanSide::MinusZ: return "-z";
+        case OceanSide::PlusZ: return "+z";
+    }
+    return "?";
+}
+
+}  // namespace tide
