@@ -102,6 +102,13 @@ std::vector<BrokenScene> brokenScenes() {
          "obstacles[1].name: \"obstacle0\" is already the name of obstacles[0]"},
         {"load reference two numbers", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.05, 0.1], "radius": 0.02, "load_reference": [0, 1]}])"),
          "obstacles[0].load_reference"},
+        {"body without density or mass", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.15, 0.1], "radius": 0.02, "dynamic": true}])"),
+         "obstacles[0].density: a dynamic body needs exactly one of density"},
+        {"body with an unknown axis", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.15, 0.1], "radius": 0.02, "dynamic": true,
+            "density": 500, "constraint": {"free": ["y", "w"]}}])"),
+         "obstacles[0].constraint.free[1]: unknown axis \"w\""},
+        {"body density without dynamic", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.15, 0.1], "radius": 0.02, "density": 500}])"),
+         "obstacles[0].dynamic: must be true"},
         {"unknown solver", smallScene(R"(, "solver": {"method": "dfsph-ultra"})"), "solver.method"},
         {"unknown solver key", smallScene(R"(, "solver": {"methd": "classic"})"), "solver.methd"},
         {"unknown kernel", smallScene(R"(, "solver": {"kernel": "gaussian"})"), "solver.kernel"},
@@ -528,6 +535,30 @@ TEST(Cli, LoadsOnObstaclesWallsAndPaddlesAreWrittenAsForcesCsv) {
     // Water 0.15 m deep pushes the step (0.09 m tall) down and the floor carries most of the weight.
     EXPECT_LT(rows[2][2], 0.0);
     EXPECT_NEAR(rows[1][0], 0.1, 1e-12);
+}
+
+// bodies.csv (a contract): time, then each dynamic body's centre of mass and orientation.
+TEST(Cli, FloatingBodiesAreWrittenAsBodiesCsv) {
+    const fs::path out = scratch("bodies_out");
+    const fs::path scene = writeScene("bodies", smallScene(R"(, "obstacles": [{"type": "box", "name": "crate", "min": [0.12, 0.12, 0.06],
+        "max": [0.18, 0.18, 0.14], "dynamic": true, "density": 2000, "constraint": {"free": ["y"]}}])"));
+    const Result r = run(kTide + " run " + scene.string() + " --quiet --force --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    std::ifstream bodies(out / "bodies.csv");
+    std::string line;
+    std::getline(bodies, line);
+    EXPECT_EQ(line.rfind("time,crate_x,crate_y,crate_z,crate_qw,crate_qx,crate_qy,crate_qz,crate_vx,", 0), 0u) << line;
+    std::vector<std::string> rows;
+    while (std::getline(bodies, line)) rows.push_back(line);
+    ASSERT_EQ(rows.size(), 3u);  // t = 0, 0.05, 0.1
+    // Twice as dense as water, dropped in the air: it falls, ½ g t² = 4.9 cm in 0.1 s.
+    const auto y = [](const std::string& row) {
+        std::stringstream cells(row);
+        std::string cell;
+        for (int k = 0; k < 3; ++k) std::getline(cells, cell, ',');
+        return std::stod(cell);
+    };
+    EXPECT_NEAR(y(rows[0]) - y(rows[2]), 0.5 * 9.81 * 0.01, 0.005);
 }
 
 TEST(Cli, ShippedScenesValidate) {

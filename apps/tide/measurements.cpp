@@ -56,6 +56,24 @@ void Measurements::sample(World& world, double t) {
             }
         forceRows_ += '\n';
     }
+    if (const std::vector<BodyState> bodies = world.bodies(); !bodies.empty()) {
+        if (bodyNames_.empty())
+            for (const BodyState& b : bodies) bodyNames_.push_back(b.name);
+        append(bodyRows_, t);
+        for (const BodyState& b : bodies)
+            for (const double value : {b.position.x, b.position.y, b.position.z, b.orientation.w, b.orientation.x,
+                                       b.orientation.y, b.orientation.z}) {
+                bodyRows_ += ',';
+                append(bodyRows_, value);
+            }
+        for (const BodyState& b : bodies)
+            for (const double value : {b.velocity.x, b.velocity.y, b.velocity.z, b.angularVelocity.x, b.angularVelocity.y,
+                                       b.angularVelocity.z}) {
+                bodyRows_ += ',';
+                append(bodyRows_, value);
+            }
+        bodyRows_ += '\n';
+    }
     if (!gauges_.empty()) {
         append(gaugeRows_, t);
         for (const io::GaugeDef& g : gauges_) {
@@ -78,6 +96,15 @@ void Measurements::sample(World& world, double t) {
 }
 
 void Measurements::write(const std::filesystem::path& dir) const {
+    if (!bodyNames_.empty())
+        io::writeFileAtomically(dir / "bodies.csv", [&](std::ostream& out) {
+            out << "time";
+            for (const std::string& name : bodyNames_)
+                for (const char* column : {"_x", "_y", "_z", "_qw", "_qx", "_qy", "_qz"}) out << ',' << name << column;
+            for (const std::string& name : bodyNames_)
+                for (const char* column : {"_vx", "_vy", "_vz", "_wx", "_wy", "_wz"}) out << ',' << name << column;
+            out << '\n' << bodyRows_;
+        });
     if (loads_ && !solids_.empty())
         io::writeFileAtomically(dir / "forces.csv", [&](std::ostream& out) {
             out << "time";

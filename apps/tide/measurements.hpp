@@ -7,7 +7,11 @@
 /// every wall face: `<name>_fx,<name>_fy,<name>_fz,<name>_mx,<name>_my,<name>_mz`, N and N·m
 /// about the solid's reference point, each the mean over the frame interval that ends at the
 /// row's time: the momentum exchanged, which an instant's value would alias; then for the
-/// same solids the pressure part `<name>_fx_p,<name>_fy_p,<name>_fz_p`). Each file is written whole
+/// same solids the pressure part `<name>_fx_p,<name>_fy_p,<name>_fz_p`), and the dynamic
+/// obstacles' motion as OUT/bodies.csv (`time`, then per body `<name>_x,<name>_y,<name>_z`, its
+/// centre of mass, m, `<name>_qw,<name>_qx,<name>_qy,<name>_qz`, its rotation from the rest
+/// pose; then per body `<name>_vx,<name>_vy,<name>_vz,<name>_wx,<name>_wy,<name>_wz`, m/s and
+/// rad/s). Each file is written whole
 /// and atomically (temporary file, rename): a run that stops early leaves the rows sampled
 /// so far, never half a file.
 
@@ -35,10 +39,12 @@ public:
     [[nodiscard]] const std::string& gaugeRows() const { return gaugeRows_; }
     [[nodiscard]] const std::string& probeRows() const { return probeRows_; }
     [[nodiscard]] const std::string& forceRows() const { return forceRows_; }
-    void restoreRows(std::string gaugeRows, std::string probeRows, std::string forceRows) {
+    [[nodiscard]] const std::string& bodyRows() const { return bodyRows_; }
+    void restoreRows(std::string gaugeRows, std::string probeRows, std::string forceRows, std::string bodyRows) {
         gaugeRows_ = std::move(gaugeRows);
         probeRows_ = std::move(probeRows);
         forceRows_ = std::move(forceRows);
+        bodyRows_ = std::move(bodyRows);
     }
 
 private:
@@ -47,7 +53,8 @@ private:
     bool loads_ = false;                ///< WorldDef::loads: forces.csv is written
     std::vector<std::uint32_t> solids_;  ///< forces.csv's solids, indices in World::solids()
     std::vector<std::string> solidNames_;
-    std::string gaugeRows_, probeRows_, forceRows_;
+    std::vector<std::string> bodyNames_;  ///< bodies.csv's bodies
+    std::string gaugeRows_, probeRows_, forceRows_, bodyRows_;
 };
 
 }  // namespace tide::cli

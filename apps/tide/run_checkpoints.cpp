@@ -20,6 +20,7 @@ std::string encodeRunProgress(const RunProgress& p) {
     j["gauge_rows"] = p.gaugeRows;
     j["probe_rows"] = p.probeRows;
     j["force_rows"] = p.forceRows;
+    j["body_rows"] = p.bodyRows;
     j["scene_crc32"] = p.sceneCrc;
     j["solver"] = p.solver;
     j["checkpoint_every"] = p.checkpointEvery;
@@ -39,6 +40,7 @@ RunProgress decodeRunProgress(const std::string& text) {
         p.gaugeRows = j.at("gauge_rows").get<std::string>();
         p.probeRows = j.at("probe_rows").get<std::string>();
         p.forceRows = j.value("force_rows", std::string());
+        p.bodyRows = j.value("body_rows", std::string());
         p.sceneCrc = j.at("scene_crc32").get<std::uint32_t>();
         p.solver = j.at("solver").get<std::string>();
         p.checkpointEvery = j.at("checkpoint_every").get<int>();

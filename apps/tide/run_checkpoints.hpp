@@ -21,6 +21,7 @@ struct RunProgress {
     double wallSeconds = 0.0;          ///< wall time spent so far, for stats.json
     std::string gaugeRows, probeRows;  ///< Measurements' rows so far
     std::string forceRows;             ///< forces.csv's rows so far (absent from older checkpoints: none)
+    std::string bodyRows;              ///< bodies.csv's rows so far (the same)
     std::uint32_t sceneCrc = 0;        ///< CRC-32 of the scene file: a checkpoint fits only its scene
     std::string solver;                ///< the solver the run used (--solver may override the scene's)
     // The run's command-line choices: a resumed run keeps them unless given again.

@@ -230,7 +230,7 @@ int runCommand(const RunOptions& o) {
     std::uint32_t lost = done.lost;
     bool reportedFull = false;
     Measurements measurements(scene);
-    measurements.restoreRows(done.gaugeRows, done.probeRows, done.forceRows);
+    measurements.restoreRows(done.gaugeRows, done.probeRows, done.forceRows, done.bodyRows);
     io::SurfaceMeshDef surface{scene.world.particleSpacing, {}, scene.world.threads};  // the obj format's
     for (const MaterialDef& m : scene.materials) surface.materialNames.push_back(m.name);
     int lastFrame = firstFrame - 1;
@@ -267,6 +267,7 @@ int runCommand(const RunOptions& o) {
                                       measurements.gaugeRows(),
                                       measurements.probeRows(),
                                       measurements.forceRows(),
+                                      measurements.bodyRows(),
                                       crc,
                                       scene.world.solver.method,
                                       checkpointEvery,

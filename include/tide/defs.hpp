@@ -218,6 +218,21 @@ struct MotionDef {
     std::vector<MotionKey> keys;     ///< Table: rows at strictly increasing times
 };
 
+/// How an obstacle moves when the fluid moves it (ObstacleDef::dynamics): a rigid body of six
+/// degrees of freedom, coupled both ways (tide::bodies: exact mass properties from the shape,
+/// gravity, the fluid's load every step, contact with walls, fixed obstacles and other bodies).
+struct BodyDynamicsDef {
+    std::optional<double> density;            ///< kg/m³; exactly one of density and mass
+    std::optional<double> mass;               ///< kg
+    std::optional<glm::vec3> centerOfMass;    ///< m, rest pose; default the shape's
+    glm::vec3 velocity{0.0f};                 ///< initial velocity of the centre of mass, m/s
+    glm::vec3 angularVelocity{0.0f};          ///< initial, rad/s
+    /// The degrees of freedom left free, of "x", "y", "z" (translations) and "rx", "ry", "rz"
+    /// (rotations about the world axes): {"y"} heaves only, {"x", "y", "rz"} moves in the x–y
+    /// plane. Empty: all six.
+    std::vector<std::string> freeAxes;
+};
+
 /// A solid the fluid flows around, sampled as boundary particles: fixed, or moving by a
 /// prescribed `motion`. Which fields matter depends on the shape; World::addObstacle
 /// validates them.
@@ -248,6 +263,8 @@ struct ObstacleDef {
     /// unset: the shape's centre (box, sphere and cylinder centre, the plane's point, the
     /// centre of the mesh's bounding box).
     std::optional<glm::vec3> loadReference;
+    /// Set: the fluid moves it (a floating or sinking body; not a plane, no `motion`).
+    std::optional<BodyDynamicsDef> dynamics;
 };
 
 /// A box filled with particles on a cubic lattice.

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
@@ -167,6 +168,17 @@ struct SolidLoad {
     [[nodiscard]] glm::dvec3 force() const { return pressureForce + viscousForce; }
 };
 
+/// Where a dynamic obstacle (a body the fluid moves) is and how it moves.
+struct BodyState {
+    std::uint32_t obstacle = 0;          ///< its index among the obstacles
+    std::string name;                    ///< the obstacle's name
+    glm::dvec3 position{0.0};            ///< centre of mass, m
+    glm::dquat orientation{1.0, 0.0, 0.0, 0.0};  ///< rotation from the rest pose (w, x, y, z)
+    glm::dvec3 velocity{0.0};            ///< of the centre of mass, m/s
+    glm::dvec3 angularVelocity{0.0};     ///< rad/s
+    glm::dvec3 contactForce{0.0};        ///< from walls, obstacles and other bodies, N (mean over the last step)
+};
+
 /// What an emitter has accumulated during a run (its EmitterDef is the scene's).
 struct EmitterProgress {
     bool active = true;
@@ -185,6 +197,7 @@ struct WorldState {
     ParticleStore particles;              ///< every array, in the store's current order, and the next id
     std::vector<EmitterProgress> emitters;
     std::vector<double> solverState;      ///< scalars the solver carries between steps (see Solver)
+    std::vector<double> bodyState;        ///< the dynamic obstacles' state (tide::bodies::BodySystem)
 };
 
 /// Names of the solvers World accepts in SolverDef::method.
@@ -262,6 +275,8 @@ public:
     [[nodiscard]] float surfaceHeight(float x, float z) const;
     /// Density, pressure and velocity interpolated at a point (Shepard-normalised SPH sum).
     [[nodiscard]] ProbeSample probe(const glm::vec3& point) const;
+    /// The dynamic obstacles (ObstacleDef::dynamics), in the order added, as they are now.
+    [[nodiscard]] std::vector<BodyState> bodies() const;
     /// Every solid the fluid can load, in the order of solidLoads(): the container's six faces
     /// (those a periodic axis or WorldDef::walls = false leaves out carry no load), then
     /// wave makers and obstacles in the order they were added.

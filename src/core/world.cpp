@@ -12,6 +12,9 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <tide/bodies.hpp>
+
+#include "bodies/body_pose.hpp"
 #include "boundary/boundary_particles.hpp"
 #include "boundary/damping_zone.hpp"
 #include "boundary/obstacles.hpp"
@@ -163,7 +166,16 @@ struct World::Impl {
         RigidMotion motion;
         std::uint32_t begin;
         std::vector<glm::vec3> rest;
+        int body = -1;  ///< a dynamic obstacle's index in `bodies`: its pose is the body's, not `motion`'s
     };
+    /// The dynamic obstacles' rigid bodies (made with the first), and each one's mover.
+    std::unique_ptr<bodies::BodySystem> bodySystem;
+    std::vector<bodies::BodyDef> bodyDefs;
+    std::vector<std::uint32_t> bodyMovers;
+    /// Where mover m is at time t: a body where it is now (it moves by stepping, not by t).
+    [[nodiscard]] RigidPose moverPose(const Mover& m, double t) const {
+        return m.body >= 0 ? bodies::poseOf(bodySystem->body(static_cast<std::size_t>(m.body))) : m.motion.pose(t);
+    }
     std::vector<Mover> movers;
     /// A wave paddle and its boundary particles [begin, begin + rest.size()).
     struct Paddle {
@@ -234,7 +246,7 @@ struct World::Impl {
                 refs[s] = rest;
                 for (const Mover& m : movers)
                     if (m.index == solid.index) {
-                        const RigidPose pose = m.motion.pose(t);
+                        const RigidPose pose = moverPose(m, t);
                         refs[s] = pose.pivot + pose.rotation * (rest - pose.center);
                     }
             } else {
@@ -261,6 +273,71 @@ struct World::Impl {
             loadImpulse[s].moment += dt * lastLoads[s].moment;
         }
         loadTime += dt;
+    }
+
+    /// Makes the rigid body of a dynamic obstacle (the body system with the first, meeting the
+    /// walls and every fixed obstacle); returns its index. Throws naming the field at fault.
+    int addBody(const ObstacleDef& obstacle) {
+        const BodyDynamicsDef& d = *obstacle.dynamics;
+        bodies::BodyDef body;
+        body.name = "obstacle " + obstacle.name;
+        body.shape = obstacle;
+        body.shape.dynamics.reset();
+        body.density = d.density;
+        body.mass = d.mass;
+        if (d.centerOfMass) body.centerOfMass = glm::dvec3(*d.centerOfMass);
+        body.velocity = glm::dvec3(d.velocity);
+        body.angularVelocity = glm::dvec3(d.angularVelocity);
+        if (!d.freeAxes.empty()) body.constraint = bodies::freeAxes(d.freeAxes, "obstacle.constraint.free");
+        const std::vector<double> before = bodySystem ? bodySystem->saveState() : std::vector<double>{};
+        bodyDefs.push_back(body);
+        try {
+            makeBodySystem(bodyDefs.size() - 1);
+            if (!before.empty()) bodySystem->restoreState(before);
+            (void)bodySystem->addBody(body);
+            bodySystem->validatePlacement(0.5 * def.particleSpacing);
+        } catch (...) {
+            bodyDefs.pop_back();  // the world stays as it was
+            makeBodySystem(bodyDefs.size());
+            if (!bodyDefs.empty()) bodySystem->restoreState(before);
+            else bodySystem.reset();
+            throw;
+        }
+        return static_cast<int>(bodyDefs.size() - 1);
+    }
+
+    /// The body system afresh: the walls, the fixed obstacles and the first `count` bodyDefs.
+    void makeBodySystem(std::size_t count) {
+        {
+            bodySystem = std::make_unique<bodies::BodySystem>(glm::dvec3(def.gravity));
+            if (def.walls) {
+                glm::dvec3 lo = wallsMin(), hi = wallsMax();
+                for (int axis = 0; axis < 3; ++axis)
+                    if (periodic.periodic(axis)) {
+                        lo[axis] = -1e30;
+                        hi[axis] = 1e30;
+                    }
+                bodySystem->setWalls(lo, hi);
+            }
+            for (std::size_t k = 0; k < fixedObstacles.size(); ++k) bodySystem->addFixedObstacle(fixedObstacles[k], fixedObstacles[k].name);
+            for (std::size_t k = 0; k < count; ++k) (void)bodySystem->addBody(bodyDefs[k]);
+        }
+    }
+
+    /// Moves every body one step of dt under the load the fluid put on it in the step (its
+    /// pair forces; the moment taken about its centre of mass).
+    void stepBodies(double dt) {
+        std::vector<glm::dvec3> forces, moments;
+        const std::vector<glm::dvec3> refs = solidReferences(time);
+        for (const std::uint32_t mover : bodyMovers) {
+            const Mover& m = movers[mover];
+            const std::uint16_t s = solidOfObstacle(m.index);
+            const SolidLoad& load = lastLoads[s];
+            const glm::dvec3 centre = bodySystem->body(static_cast<std::size_t>(m.body)).position();
+            forces.push_back(load.force());
+            moments.push_back(load.moment + glm::cross(refs[s] - centre, load.force()));
+        }
+        bodySystem->step(dt, forces, moments);
     }
 
     void resetLoads() {
@@ -344,7 +421,7 @@ struct World::Impl {
         for (const Mover& m : movers) {
             const ObstacleDef& o = obstacles[m.index];
             const float keep = fill == Fill::Block && o.shape == ObstacleDef::Shape::Box ? clearance : half;
-            if (!(signedDistance(o, m.motion.pose(time), x) > keep)) return false;
+            if (!(signedDistance(o, moverPose(m, time), x) > keep)) return false;
         }
         for (const Paddle& paddle : paddles)
             if (!(paddle.maker.distanceInFront(time, x) > half)) return false;
@@ -380,7 +457,7 @@ struct World::Impl {
                                std::span(boundary.acceleration).subspan(paddle.begin, n));
         }
         for (const Mover& m : movers) {
-            const RigidPose pose = m.motion.pose(t);
+            const RigidPose pose = moverPose(m, t);
             parallelFor(static_cast<std::uint32_t>(m.rest.size()), threads, [&](std::uint32_t k) {
                 const std::uint32_t b = m.begin + k;
                 const glm::vec3 x = pose.place(m.rest[k]);
@@ -676,7 +753,12 @@ void World::addObstacle(const ObstacleDef& def) {
         default: throw std::invalid_argument("obstacle.shape: unknown shape");
     }
     obstacle.motion = validatedMotion(obstacle.motion, "obstacle.motion");
-    const bool moves = obstacle.motion.type != MotionDef::Type::None;
+    const bool dynamic = obstacle.dynamics.has_value();
+    if (dynamic && obstacle.motion.type != MotionDef::Type::None)
+        throw std::invalid_argument("obstacle.dynamic: a body the fluid moves has no prescribed motion; drop one of them");
+    if (dynamic && obstacle.shape == ObstacleDef::Shape::Plane)
+        throw std::invalid_argument("obstacle.dynamic: a plane cannot be a body (it is infinite); use a box");
+    const bool moves = obstacle.motion.type != MotionDef::Type::None || dynamic;
     if (moves && obstacle.shape == ObstacleDef::Shape::Plane)
         throw std::invalid_argument("obstacle.motion: a plane cannot move (it is sampled only inside the container); use a box");
     // Sample up to the outside of the wall shell (a plane is infinite), or across one period
@@ -698,24 +780,39 @@ void World::addObstacle(const ObstacleDef& def) {
         throw std::invalid_argument("obstacle.name: \"" + obstacle.name + "\" is taken by another solid; names must be unique");
     if (obstacle.loadReference)
         for (int axis = 0; axis < 3; ++axis) requireFinite("obstacle.load_reference", (*obstacle.loadReference)[axis]);
+    const int body = dynamic ? w.addBody(obstacle) : -1;  // first: it may refuse the body
     const auto solid = static_cast<std::uint16_t>(w.solids.size());
     w.solids.push_back({SolidInfo::Kind::Obstacle, index, obstacle.name});
     w.obstacleReferences.push_back(obstacle.loadReference ? *obstacle.loadReference : shapeCentre(obstacle));
     w.obstacles.push_back(obstacle);
     if (!moves) {
+        if (w.bodySystem) w.bodySystem->addFixedObstacle(obstacle, obstacle.name);
         w.boundary.add(points, 1.0f / w.latticeSum, 0.5f * w.def.particleSpacing, w.h, w.threads, solid);
         w.fixedObstacles.push_back(obstacle);
         w.fixedObstacleSolids.push_back(solid);
         return;
     }
     const std::uint32_t begin = w.boundary.addMoving(points, 1.0f / w.latticeSum, solid);
-    w.movers.push_back({index, RigidMotion(obstacle.motion), begin, std::move(points)});
+    w.movers.push_back({index, RigidMotion(obstacle.motion), begin, std::move(points), body});
+    if (dynamic) w.bodyMovers.push_back(static_cast<std::uint32_t>(w.movers.size() - 1));
     w.moveBoundaries(w.time);
 }
 
 const std::vector<ObstacleDef>& World::obstacles() const { return impl_->obstacles; }
 
 const std::vector<SolidInfo>& World::solids() const { return impl_->solids; }
+
+std::vector<BodyState> World::bodies() const {
+    const Impl& w = *impl_;
+    std::vector<BodyState> out;
+    for (const std::uint32_t mover : w.bodyMovers) {
+        const Impl::Mover& m = w.movers[mover];
+        const bodies::RigidBody& b = w.bodySystem->body(static_cast<std::size_t>(m.body));
+        out.push_back({m.index, w.obstacles[m.index].name, b.position(), b.orientation(), b.velocity(), b.angularVelocity(),
+                       b.contactForce()});
+    }
+    return out;
+}
 
 std::optional<std::uint32_t> World::findSolid(const std::string& name) const {
     for (std::size_t s = 0; s < impl_->solids.size(); ++s)
@@ -748,7 +845,7 @@ ObstaclePose World::obstaclePose(std::uint32_t index, double t) const {
     if (index >= w.obstacles.size()) throw std::invalid_argument("obstacle: no obstacle " + std::to_string(index));
     for (const Impl::Mover& m : w.movers)
         if (m.index == index) {
-            const RigidPose pose = m.motion.pose(t);
+            const RigidPose pose = w.moverPose(m, t);
             return {pose.rotation, pose.pivot - pose.rotation * pose.center};
         }
     return {};
@@ -763,7 +860,7 @@ std::uint32_t World::countEscapedParticles() const {
             out = out || (!w.periodic.periodic(axis) &&
                           !(x[axis] >= w.def.domainMin[axis] && x[axis] <= w.def.domainMax[axis]));
         for (const ObstacleDef& o : w.fixedObstacles) out = out || signedDistance(o, x) < 0.0f;
-        for (const Impl::Mover& m : w.movers) out = out || signedDistance(w.obstacles[m.index], m.motion.pose(w.time), x) < 0.0f;
+        for (const Impl::Mover& m : w.movers) out = out || signedDistance(w.obstacles[m.index], w.moverPose(m, w.time), x) < 0.0f;
         for (const Impl::Paddle& paddle : w.paddles) out = out || paddle.maker.distanceInFront(w.time, x) < 0.0f;
         escaped += out;
     }
@@ -903,12 +1000,16 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     ctx.clock = &clock;
     w.pairTables.build(w.materials.size(), w.pairs);
     ctx.pairs = &w.pairTables;
-    if (w.def.loads) {
+    const bool loads = w.def.loads || w.bodySystem;  // bodies move by their loads
+    if (loads) {
         w.wallLoads.reset(w.boundaryNeighbors.slotCount());
         ctx.loads = &w.wallLoads;
     }
     const double dt = w.solver->step(ctx);
-    if (w.def.loads) w.sumLoads(dt);
+    if (loads) w.sumLoads(dt);
+    // Bodies move over the step under its load (weak coupling: the fluid saw them where they
+    // were at its start); the strays are then pushed out of them where they end.
+    if (w.bodySystem && !held) w.stepBodies(dt);
     // Where the step ends: with the clock held (settle), where it started.
     const double end = held ? w.time : w.time + dt;
     // Dye spreads over this step's neighbour lists at the positions the solver moved to.
@@ -922,11 +1023,10 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     const float margin = w.solver->wallMargin() * w.def.particleSpacing;
     // The projections below stop strays: the normal speed they take away is momentum the
     // solid absorbs, part of its load (with loads on, each stage's change is booked to it).
-    const bool loads = w.def.loads;
     if (loads) w.contacts.begin(w.particles, w.solidReferences(w.time), w.periodic);
     // Moving obstacles first: where one squeezes a particle against a wall, the wall wins.
     for (const Impl::Mover& m : w.movers) {
-        projectOutOfMovingObstacle(w.obstacles[m.index], m.motion.pose(end), w.particles, margin, w.threads);
+        projectOutOfMovingObstacle(w.obstacles[m.index], w.moverPose(m, end), w.particles, margin, w.threads);
         if (loads) w.contacts.book(w.particles, w.threads, [&](std::uint32_t, const glm::vec3&) { return w.solidOfObstacle(m.index); });
     }
     if (w.def.walls) {
@@ -1057,6 +1157,7 @@ WorldState World::saveState() const {
     s.particles = w.particles;
     for (const EmitterState& e : w.emitters) s.emitters.push_back({e.active, e.travelled});
     s.solverState = w.solver->carriedState();
+    if (w.bodySystem) s.bodyState = w.bodySystem->saveState();
     return s;
 }
 
@@ -1108,10 +1209,22 @@ void checkFits(const WorldState& s, std::size_t materials, std::size_t emitters,
 void World::restoreState(WorldState state) {
     Impl& w = *impl_;
     checkFits(state, w.materials.size(), w.emitters.size(), w.def.capacity);
+    if (!w.bodySystem && !state.bodyState.empty()) misfit("the state holds floating bodies, this world has none");
+    const std::vector<double> bodiesBefore = w.bodySystem ? w.bodySystem->saveState() : std::vector<double>{};
+    if (w.bodySystem) {
+        try {
+            w.bodySystem->restoreState(state.bodyState);
+        } catch (const std::exception& e) {
+            w.bodySystem->restoreState(bodiesBefore);
+            misfit(std::string("its floating bodies do not fit this world's: ") + e.what());
+        }
+    }
     const std::vector<double> solverBefore = w.solver->carriedState();
-    if (!w.solver->restoreCarriedState(state.solverState))
+    if (!w.solver->restoreCarriedState(state.solverState)) {
+        if (w.bodySystem) w.bodySystem->restoreState(bodiesBefore);
         misfit(std::to_string(state.solverState.size()) + " solver scalars saved, the " + w.def.solver.method +
                " solver carries " + std::to_string(solverBefore.size()));
+    }
     // Nothing below can fail: the World changes all at once or not at all.
     w.time = state.time;
     w.soundSpeed = state.soundSpeed;

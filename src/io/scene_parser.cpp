@@ -509,6 +509,59 @@ std::optional<MotionDef> readMotion(Reader& r, const json& j, const std::string&
     return m;
 }
 
+/// An obstacle's "dynamic": true and its body's keys (density or mass, center_of_mass,
+/// velocity, angular_velocity, constraint.free) into o.dynamics; false on a problem.
+bool readBodyDynamics(Reader& r, const json& j, const std::string& path, float scale, ObstacleDef& o) {
+    const bool bodyKeys = j.contains("density") || j.contains("mass") || j.contains("center_of_mass") ||
+                          j.contains("velocity") || j.contains("angular_velocity") || j.contains("constraint");
+    if (!j.contains("dynamic") && !bodyKeys) return true;
+    const auto dynamic = r.boolean(j, "dynamic", path);
+    if (j.contains("dynamic") && !dynamic) return false;
+    if (!dynamic.value_or(false)) {
+        if (!bodyKeys) return true;  // "dynamic": false, a fixed obstacle
+        r.fail(join(path, "dynamic"), "must be true for a body's density, mass, velocity or constraint");
+        return false;
+    }
+    if (o.shape == ObstacleDef::Shape::Plane) {
+        r.fail(join(path, "dynamic"), "a plane cannot be a body (it is infinite); use a box");
+        return false;
+    }
+    if (j.contains("motion")) {
+        r.fail(join(path, "motion"), "a dynamic body moves by the fluid's loads, not a prescribed motion; drop one");
+        return false;
+    }
+    if (j.contains("density") == j.contains("mass")) {
+        r.fail(join(path, "density"), "a dynamic body needs exactly one of density (kg/m³) and mass (kg)");
+        return false;
+    }
+    const std::size_t before = r.problems.size();
+    BodyDynamicsDef body;
+    if (auto v = r.number(j, "density", path, false, 0.0, 1e6, true)) body.density = *v;
+    if (auto v = r.number(j, "mass", path, false, 0.0, 1e12, true)) body.mass = *v;
+    if (j.contains("center_of_mass"))
+        if (auto v = r.vec3(j, "center_of_mass", path, false)) body.centerOfMass = *v * scale;
+    if (auto v = r.vec3(j, "velocity", path, false)) body.velocity = *v * scale;
+    if (auto v = r.vec3(j, "angular_velocity", path, false)) body.angularVelocity = *v;
+    if (j.contains("constraint") && r.object(j.at("constraint"), join(path, "constraint"), {"free"})) {
+        const std::string where = join(path, "constraint.free");
+        const json& free = j.at("constraint").contains("free") ? j.at("constraint").at("free") : json();
+        static const std::vector<std::string> kAxes{"x", "y", "z", "rx", "ry", "rz"};
+        if (!free.is_array() || free.empty()) {
+            r.fail(where, "must list the free axes, of \"x\", \"y\", \"z\", \"rx\", \"ry\", \"rz\", got " + show(free));
+        } else {
+            for (std::size_t k = 0; k < free.size(); ++k) {
+                if (!free[k].is_string() || std::find(kAxes.begin(), kAxes.end(), free[k].get<std::string>()) == kAxes.end())
+                    r.fail(indexed(where, k), "unknown axis " + show(free[k]) + ": one of x, y, z, rx, ry, rz");
+                else
+                    body.freeAxes.push_back(free[k].get<std::string>());
+            }
+        }
+    }
+    if (r.problems.size() != before) return false;
+    o.dynamics = body;
+    return true;
+}
+
 /// One entry of "obstacles"; lengths scaled by `scale`, mesh files relative to `baseDirectory`.
 std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::string& path, float scale,
                                         const std::filesystem::path& baseDirectory) {
@@ -516,11 +569,11 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
     if (!type) return std::nullopt;
     ObstacleDef o;
     if (*type == "box") {
-        if (!r.object(j, path, {"type", "min", "max", "motion", "name", "load_reference"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "min", "max", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
         if (!readBox(r, j, path, scale, o.min, o.max)) return std::nullopt;
         o.shape = ObstacleDef::Shape::Box;
     } else if (*type == "sphere") {
-        if (!r.object(j, path, {"type", "center", "radius", "motion", "name", "load_reference"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "center", "radius", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
         const auto c = r.vec3(j, "center", path, true);
         const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
         if (!c || !radius) return std::nullopt;
@@ -528,7 +581,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.center = *c * scale;
         o.radius = static_cast<float>(*radius) * scale;
     } else if (*type == "cylinder") {
-        if (!r.object(j, path, {"type", "center", "axis", "radius", "length", "motion", "name", "load_reference"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "center", "axis", "radius", "length", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
         const auto c = r.vec3(j, "center", path, true);
         const auto axis = readDirection(r, j, "axis", path);
         const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
@@ -540,7 +593,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.radius = static_cast<float>(*radius) * scale;
         o.length = static_cast<float>(*length) * scale;
     } else if (*type == "plane") {
-        if (!r.object(j, path, {"type", "point", "normal", "motion", "name", "load_reference"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "point", "normal", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
         const auto point = r.vec3(j, "point", path, true);
         const auto normal = readDirection(r, j, "normal", path);
         if (!point || !normal) return std::nullopt;
@@ -548,7 +601,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.point = *point * scale;
         o.normal = *normal;
     } else if (*type == "mesh") {
-        if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate", "motion", "name", "load_reference"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
         const auto file = r.string(j, "file", path, true);
         MeshPlacement placement;
         const auto meshScale = readMeshScale(r, j, path);
@@ -601,6 +654,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         if (!point) return std::nullopt;
         o.loadReference = *point * scale;
     }
+    if (!readBodyDynamics(r, j, path, scale, o)) return std::nullopt;
     if (j.contains("motion")) {
         if (o.shape == ObstacleDef::Shape::Plane) {
             r.fail(join(path, "motion"), "a plane cannot move (it is infinite); use a box");
