@@ -156,7 +156,7 @@ class World(_tide.World):
                 if callback is not None:
                     frames += 1
                     if callback(self) is False:
-                        break
+                        return frames
             if end - self.time > 1e-9:  # an end between frames
                 self.advance(end - self.time)
                 bar.update(self, last, last)
