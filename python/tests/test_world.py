@@ -5,6 +5,7 @@ import gc
 import json
 import os
 import signal
+import subprocess
 import threading
 
 import numpy as np
@@ -245,3 +246,21 @@ def test_stats_are_a_dict():
     assert s["particles"] == 125 and s["steps"] == world.steps > 0
     assert s["solver"] == "dfsph" and s["particles_lost"] == 0
     assert s["dt_min"] <= s["dt_mean"] <= s["dt_max"]
+
+
+def test_a_python_run_writes_the_frames_tide_run_writes_bit_for_bit(tmp_path, bin_dir):
+    cli = bin_dir / "tide"
+    if not cli.exists():
+        pytest.skip("the tide command line is not built")
+    scene = small_tank(settle={"time": 0.02})
+    path = tmp_path / "tank.json"
+    path.write_text(json.dumps(scene))
+    subprocess.run([str(cli), "run", str(path), "--out", str(tmp_path / "cli"), "--format", "csv", "--quiet"], check=True)
+    world = tide.World(scene)
+    frames = []
+    world.run(callback=lambda w: frames.append(tide.io.write_frame(w, tmp_path / f"py_{len(frames)}.csv") or 1),
+              progress=False)
+    assert len(frames) == 6
+    for k in range(6):
+        assert (tmp_path / f"py_{k}.csv").read_bytes() == (tmp_path / "cli" / f"frame_{k:05d}.csv").read_bytes(), k
+    assert json.loads((tmp_path / "cli" / "stats.json").read_text())["steps"] == world.steps
