@@ -2,6 +2,7 @@
 // GIL released and Ctrl-C checked between steps; particle arrays as numpy views; gauges,
 // probes, obstacle poses; blocks, emitters and obstacles added from dicts.
 #include <atomic>
+#include <chrono>
 #include <cstring>
 #include <limits>
 #include <sstream>
@@ -54,7 +55,15 @@ public:
     void advance(double seconds) {
         Busy busy(*this);
         py::gil_scoped_release nogil;
-        world_->advance(seconds, checkSignals);
+        // Ctrl-C is looked at between steps, at most every 20 ms: taking the GIL back after
+        // every step would wait on any busy Python thread each time.
+        auto lastCheck = std::chrono::steady_clock::now();
+        world_->advance(seconds, [&] {
+            const auto now = std::chrono::steady_clock::now();
+            if (now - lastCheck < std::chrono::milliseconds(20)) return;
+            lastCheck = now;
+            checkSignals();
+        });
     }
 
     py::dict settle(std::optional<double> seconds, std::optional<float> speed) {
