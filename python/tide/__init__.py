@@ -201,3 +201,8 @@ class _Progress:
         if self.drawn:
             self.stream.write("\n")
             self.stream.flush()
+
+# Shown as tide.SceneError in tracebacks (they are defined by the compiled part).
+for _error in (SceneError, DivergenceError):
+    _error.__module__ = "tide"
+del _error
