@@ -194,6 +194,35 @@ std::uintptr_t address(const World& w, const std::string& name) {
     throw py::value_error("name: not a particle array, got \"" + name + "\"");
 }
 
+/// Loads on the solids (World::solids order) as numpy: names and (s, 3) float64 arrays, N and N·m.
+py::dict loadsDict(const World& w, const std::vector<SolidLoad>& loads) {
+    const auto n = static_cast<py::ssize_t>(loads.size());
+    py::array_t<double> pressure({n, py::ssize_t{3}}), viscous({n, py::ssize_t{3}}), force({n, py::ssize_t{3}}),
+        moment({n, py::ssize_t{3}});
+    auto p = pressure.mutable_unchecked<2>();
+    auto v = viscous.mutable_unchecked<2>();
+    auto f = force.mutable_unchecked<2>();
+    auto m = moment.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < n; ++i) {
+        const SolidLoad& l = loads[static_cast<std::size_t>(i)];
+        for (int c = 0; c < 3; ++c) {
+            p(i, c) = l.pressureForce[c];
+            v(i, c) = l.viscousForce[c];
+            f(i, c) = l.force()[c];
+            m(i, c) = l.moment[c];
+        }
+    }
+    std::vector<std::string> names;
+    for (const SolidInfo& s : w.solids()) names.push_back(s.name);
+    py::dict d;
+    d["names"] = names;
+    d["force"] = force;
+    d["pressure_force"] = pressure;
+    d["viscous_force"] = viscous;
+    d["moment"] = moment;
+    return d;
+}
+
 }  // namespace
 
 void bindWorld(py::module_& m) {
@@ -328,6 +357,18 @@ void bindWorld(py::module_& m) {
              },
              py::arg("index") = 0, py::arg("t") = py::none(),
              "Horizontal displacement of the wave maker's face at the still-water level, m.")
+        .def_property_readonly("solid_names",
+                               [](const PyWorld& w) {
+                                   std::vector<std::string> names;
+                                   for (const SolidInfo& solid : w.world().solids()) names.push_back(solid.name);
+                                   return names;
+                               },
+                               "The solids the fluid loads: the container's faces, wave makers, obstacles.")
+        .def("loads", [](const PyWorld& w) { return loadsDict(w.world(), w.world().solidLoads()); },
+             "The fluid's load on each solid over the last step: a dict of names and (s, 3) arrays force, "
+             "pressure_force, viscous_force (N) and moment (N·m, about the solid's reference point).")
+        .def("take_mean_loads", [](PyWorld& w) { return loadsDict(w.world(), w.world().takeMeanSolidLoads()); },
+             "As loads(), averaged over the time stepped since the last call (which starts a new average).")
         .def_property_readonly("total_mass", [](const PyWorld& w) { return w.world().totalMass(); })
         .def_property_readonly("escaped_particles", [](const PyWorld& w) { return w.world().countEscapedParticles(); })
         .def_property_readonly("material_names",

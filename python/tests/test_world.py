@@ -264,3 +264,18 @@ def test_a_python_run_writes_the_frames_tide_run_writes_bit_for_bit(tmp_path, bi
     for k in range(6):
         assert (tmp_path / f"py_{k}.csv").read_bytes() == (tmp_path / "cli" / f"frame_{k:05d}.csv").read_bytes(), k
     assert json.loads((tmp_path / "cli" / "stats.json").read_text())["steps"] == world.steps
+
+
+def test_the_floor_carries_the_waters_weight():
+    # Still water over the whole floor: the fluid's load on the floor is its weight.
+    scene = small_tank(blocks=[{"min": [0, 0, 0], "max": [0.4, 0.16, 0.4], "material": "water"}])
+    world = tide.World(scene)
+    assert "wall_ymin" in world.solid_names
+    world.take_mean_loads()
+    world.advance(0.1)
+    loads = world.take_mean_loads()
+    floor = loads["names"].index("wall_ymin")
+    assert loads["force"].shape == (len(world.solid_names), 3) and loads["force"].dtype == np.float64
+    weight = world.total_mass * 9.81
+    assert loads["force"][floor, 1] == pytest.approx(-weight, rel=0.1)  # pushed down (y up)
+    assert np.array_equal(world.loads()["names"], loads["names"])
