@@ -324,6 +324,10 @@ public:
     /// Velocities of every particle, writable between steps, for interactive tools (a
     /// viewer's mouse push). Positions and the other arrays stay the solver's to change.
     [[nodiscard]] std::span<glm::vec3> velocities();
+    /// Room for `particles` particles in every particle array (at most the capacity): the
+    /// arrays then stay where they are while particles are added up to that count, so views
+    /// of them that a caller holds (the Python module's numpy arrays) stay valid.
+    void reserve(std::uint32_t particles);
     [[nodiscard]] const WorldStats& stats() const;
     [[nodiscard]] const WorldDef& def() const;
     /// Kernel support radius h, m.

@@ -1128,6 +1128,9 @@ SettleReport World::settle(double seconds, float quietSpeed) {
 double World::time() const { return impl_->time; }
 const ParticleStore& World::particles() const { return impl_->particles; }
 std::span<glm::vec3> World::velocities() { return impl_->particles.velocity; }
+void World::reserve(std::uint32_t particles) {
+    impl_->particles.reserve(std::min(particles, impl_->def.capacity));
+}
 const WorldStats& World::stats() const { return impl_->stats; }
 const WorldDef& World::def() const { return impl_->def; }
 float World::supportRadius() const { return impl_->h; }

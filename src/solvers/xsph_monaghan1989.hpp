@@ -54,7 +54,9 @@ public:
         }
         filtered_.resize(p.size());
         smooth(p, neighbors, box, supportRadius, epsilon, threads, [&](std::uint32_t i, const glm::vec3& v) { filtered_[i] = v; });
-        p.velocity.swap(filtered_);
+        // Copied back, not swapped: the velocity array stays where it is between steps (views
+        // of it, the Python module's numpy arrays, keep pointing at the current velocities).
+        parallelFor(p.size(), threads, [&](std::uint32_t i) { p.velocity[i] = filtered_[i]; });
     }
 
 private:
