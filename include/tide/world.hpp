@@ -316,8 +316,10 @@ public:
     /// particle has stayed below that speed for kSettleQuietTime. Then every velocity is zeroed
     /// and the statistics start again; time() is unchanged. Throws std::invalid_argument naming
     /// settle.time or settle.speed for a negative or non-finite value, and DivergenceError as
-    /// step() does.
-    SettleReport settle(double seconds, float quietSpeed = 0.0f);
+    /// step() does. `afterStep` (if given) is called after each step, as advance() does: a
+    /// host may report progress or throw to stop (Python's Ctrl-C), leaving the world as the
+    /// last step left it.
+    SettleReport settle(double seconds, float quietSpeed = 0.0f, const std::function<void()>& afterStep = {});
 
     [[nodiscard]] double time() const;
     [[nodiscard]] const ParticleStore& particles() const;

@@ -24,6 +24,22 @@ namespace {
 constexpr const char* kContextKeys[] = {"name",     "unit_scale", "domain",    "gravity",       "particle_spacing",
                                         "end_time", "solver",     "materials", "material_pairs"};
 
+/// Ctrl-C, looked at between steps (advance, settle) at most every 20 ms: taking the GIL back
+/// after every step would wait on any busy Python thread each time. Throws the
+/// KeyboardInterrupt out of the stepping loop.
+class SignalPoll {
+public:
+    void operator()() {
+        const auto now = std::chrono::steady_clock::now();
+        if (now - last_ < std::chrono::milliseconds(20)) return;
+        last_ = now;
+        checkSignals();
+    }
+
+private:
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
 /// A World made from a scene, with the scene kept for what Python asks later (gauges, probes,
 /// frame rate, material names) and to read added blocks, emitters and obstacles.
 class PyWorld {
@@ -38,7 +54,8 @@ public:
         world_ = std::make_unique<World>(io::buildWorld(scene_));
         // Up to the capacity, adding particles never moves the arrays numpy views point at.
         world_->reserve(scene_.world.capacity);
-        if (settle && scene_.settleTime > 0.0) world_->settle(scene_.settleTime, scene_.settleSpeed);
+        SignalPoll poll;
+        if (settle && scene_.settleTime > 0.0) world_->settle(scene_.settleTime, scene_.settleSpeed, [&] { poll(); });
     }
 
     World& world() { return *world_; }
@@ -55,15 +72,8 @@ public:
     void advance(double seconds) {
         Busy busy(*this);
         py::gil_scoped_release nogil;
-        // Ctrl-C is looked at between steps, at most every 20 ms: taking the GIL back after
-        // every step would wait on any busy Python thread each time.
-        auto lastCheck = std::chrono::steady_clock::now();
-        world_->advance(seconds, [&] {
-            const auto now = std::chrono::steady_clock::now();
-            if (now - lastCheck < std::chrono::milliseconds(20)) return;
-            lastCheck = now;
-            checkSignals();
-        });
+        SignalPoll poll;
+        world_->advance(seconds, [&] { poll(); });
     }
 
     py::dict settle(std::optional<double> seconds, std::optional<float> speed) {
@@ -71,7 +81,8 @@ public:
         SettleReport r;
         {
             py::gil_scoped_release nogil;
-            r = world_->settle(seconds ? *seconds : scene_.settleTime, speed ? *speed : scene_.settleSpeed);
+            SignalPoll poll;
+            r = world_->settle(seconds ? *seconds : scene_.settleTime, speed ? *speed : scene_.settleSpeed, [&] { poll(); });
         }
         py::dict d;
         d["seconds"] = r.seconds;
@@ -223,6 +234,46 @@ py::dict loadsDict(const World& w, const std::vector<SolidLoad>& loads) {
     return d;
 }
 
+/// The dynamic obstacles' state (World::bodies order) as numpy: names and (b, 3) / (b, 4)
+/// float64 arrays, as bodies.csv writes them.
+py::dict bodiesDict(const World& w) {
+    const std::vector<BodyState> bodies = w.bodies();
+    const auto n = static_cast<py::ssize_t>(bodies.size());
+    py::array_t<double> position({n, py::ssize_t{3}}), orientation({n, py::ssize_t{4}}), velocity({n, py::ssize_t{3}}),
+        angular({n, py::ssize_t{3}}), contact({n, py::ssize_t{3}});
+    auto x = position.mutable_unchecked<2>();
+    auto q = orientation.mutable_unchecked<2>();
+    auto v = velocity.mutable_unchecked<2>();
+    auto a = angular.mutable_unchecked<2>();
+    auto c = contact.mutable_unchecked<2>();
+    std::vector<std::string> names;
+    std::vector<std::uint32_t> obstacles;
+    for (py::ssize_t i = 0; i < n; ++i) {
+        const BodyState& b = bodies[static_cast<std::size_t>(i)];
+        names.push_back(b.name);
+        obstacles.push_back(b.obstacle);
+        for (int k = 0; k < 3; ++k) {
+            x(i, k) = b.position[k];
+            v(i, k) = b.velocity[k];
+            a(i, k) = b.angularVelocity[k];
+            c(i, k) = b.contactForce[k];
+        }
+        q(i, 0) = b.orientation.w;
+        q(i, 1) = b.orientation.x;
+        q(i, 2) = b.orientation.y;
+        q(i, 3) = b.orientation.z;
+    }
+    py::dict d;
+    d["names"] = names;
+    d["obstacles"] = obstacles;
+    d["position"] = position;
+    d["orientation"] = orientation;
+    d["velocity"] = velocity;
+    d["angular_velocity"] = angular;
+    d["contact_force"] = contact;
+    return d;
+}
+
 }  // namespace
 
 void bindWorld(py::module_& m) {
@@ -369,6 +420,10 @@ void bindWorld(py::module_& m) {
              "pressure_force, viscous_force (N) and moment (N·m, about the solid's reference point).")
         .def("take_mean_loads", [](PyWorld& w) { return loadsDict(w.world(), w.world().takeMeanSolidLoads()); },
              "As loads(), averaged over the time stepped since the last call (which starts a new average).")
+        .def("bodies", [](const PyWorld& w) { return bodiesDict(w.world()); },
+             "The floating bodies (obstacles with \"dynamic\": true) now: a dict of names, their obstacle "
+             "indices, and (b, 3) arrays position (centre of mass, m), velocity (m/s), angular_velocity "
+             "(rad/s), contact_force (N), and (b, 4) orientation (w, x, y, z), as bodies.csv writes them.")
         .def_property_readonly("total_mass", [](const PyWorld& w) { return w.world().totalMass(); })
         .def_property_readonly("escaped_particles", [](const PyWorld& w) { return w.world().countEscapedParticles(); })
         .def_property_readonly("material_names",

@@ -279,3 +279,36 @@ def test_the_floor_carries_the_waters_weight():
     weight = world.total_mass * 9.81
     assert loads["force"][floor, 1] == pytest.approx(-weight, rel=0.1)  # pushed down (y up)
     assert np.array_equal(world.loads()["names"], loads["names"])
+
+
+def test_ctrl_c_stops_settle_and_leaves_a_usable_world():
+    world = tide.World(small_tank(), settle=False)
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            world.settle(seconds=1e6, speed=0.0)  # never quiet at speed 0: only Ctrl-C ends it
+    finally:
+        timer.cancel()
+    assert world.time == 0.0  # settling holds the clock
+    world.step()
+    assert world.time > 0.0 and np.isfinite(world.positions).all()
+
+
+def test_a_floating_body_falls_freely_until_it_meets_the_water():
+    crate = {"type": "box", "name": "crate", "min": [0.26, 0.28, 0.16], "max": [0.34, 0.34, 0.24],
+             "dynamic": True, "density": 500}
+    world = tide.World(small_tank(obstacles=[crate]), settle=False)
+    start = world.bodies()
+    assert start["names"] == ["crate"] and list(start["obstacles"]) == [0]
+    np.testing.assert_allclose(start["position"][0], [0.30, 0.31, 0.20], atol=1e-6)
+    np.testing.assert_allclose(start["orientation"][0], [1, 0, 0, 0], atol=1e-12)
+    world.advance(0.05)  # the water, 6 cm away, does not reach it this soon
+    now = world.bodies()
+    t = world.time
+    assert now["position"][0, 1] == pytest.approx(0.31 - 0.5 * 9.81 * t * t, rel=0, abs=2e-4)
+    assert now["velocity"][0, 1] == pytest.approx(-9.81 * t, rel=0.01)
+    assert abs(now["velocity"][0, 0]) < 1e-6 and abs(now["velocity"][0, 2]) < 1e-6
+    assert np.linalg.norm(now["orientation"][0]) == pytest.approx(1.0, abs=1e-9)
+    assert np.abs(now["angular_velocity"][0]).max() < 1e-6
+    assert np.abs(now["contact_force"][0]).max() == 0.0

@@ -1100,7 +1100,7 @@ void World::advance(double duration, const std::function<void()>& afterStep) {
     impl_->time = std::max(impl_->time, end);
 }
 
-SettleReport World::settle(double seconds, float quietSpeed) {
+SettleReport World::settle(double seconds, float quietSpeed, const std::function<void()>& afterStep) {
     if (!(seconds >= 0.0) || !std::isfinite(seconds))
         throw std::invalid_argument("settle.time: must be finite and >= 0, got " + std::to_string(seconds));
     if (!(quietSpeed >= 0.0f) || !std::isfinite(quietSpeed))
@@ -1112,6 +1112,7 @@ SettleReport World::settle(double seconds, float quietSpeed) {
     while (seconds - report.seconds > 1e-9) {
         report.seconds += w.step(seconds - report.seconds, Impl::Clock::Held);
         ++report.steps;
+        if (afterStep) afterStep();
         if (!(w.stats.maxSpeed < quietSpeed)) quietSince = report.seconds;
         if (report.seconds - quietSince >= kSettleQuietTime) {
             report.quiet = true;
