@@ -86,7 +86,7 @@ def surge(ctx):
 def lobovsky(ctx):
     """Lobovsky et al.'s tank (1.61 m, column 0.6 × 0.3 m) in 2D: sensors on the far wall."""
     H, g = 0.3, 9.81
-    spacing = 0.01 if ctx.quick else 0.005
+    spacing = 0.01 if ctx.quick else 0.0075
     fps = 200
     scene = slab(1.61, 0.6, spacing, (0.6, H), fps, 1.25)
     scene["output"]["formats"] = ["ply"]

@@ -20,7 +20,7 @@ def mode_velocity(path, k, y0, band):
 def rayleigh_taylor(ctx):
     """Heavy (1.8) over light (1) in [0, 1] × [0, 2], periodic in x, g = 1, ν = 1/420 (the SPH
     benchmark of Cummins & Rudman 1999 at a small amplitude): v ∝ cosh σt, σ = √(A g k) less viscosity."""
-    n = 40 if ctx.quick else 64
+    n = 32 if ctx.quick else 56
     spacing = 1.0 / n
     depth = 4 * spacing
     k, y0, V = 2 * math.pi, 1.0, 0.01
@@ -75,7 +75,7 @@ def rayleigh_taylor(ctx):
 def interfacial_wave(ctx):
     """Water (1000) over a fluid of 2000 in a closed 1 m × 1 m box filled to its lid, each
     layer 0.5 m: the first interfacial mode, ω² = g k (ρh − ρl) / (ρh coth kh1 + ρl coth kh2)."""
-    n = 40 if ctx.quick else 64
+    n = 32 if ctx.quick else 48
     spacing = 1.0 / n
     depth = 4 * spacing
     L, h1, h2 = 1.0, 0.5, 0.5
@@ -91,7 +91,7 @@ def interfacial_wave(ctx):
             V * math.cos(k * x) * math.sinh(k * yy) / math.sinh(k * h2)
         return (u, v), "light"
 
-    end, fps = 6.0, 50
+    end, fps = 5.0, 50
     scene = {
         "name": "validation interfacial wave",
         "domain": {"min": [0, 0, 0], "max": [L, h1 + h2, depth], "periodic": [False, False, True]},

@@ -23,7 +23,7 @@ import subprocess
 import sys
 import tempfile
 
-CAP = 0.2   # simulated seconds per tide run or render
+CAP = 0.1   # simulated seconds per tide run or render
 
 
 def commands(markdown):
