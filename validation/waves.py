@@ -164,7 +164,7 @@ def flume(ctx):
     b.set_xlabel("k d"), b.set_ylabel("H / S"), b.set_xlim(0, 3), b.legend(fontsize=7)
     ctx.save(fig, "validation-regular-waves.png")
     return Result("Regular waves from a piston", "validation-regular-waves.png",
-                  f"{1000 * spacing:g} mm (d/{round(d / spacing)}, H/{H / spacing:.1f})", wall,
+                  f"{1000 * spacing:.3g} mm (d/{round(d / spacing)}, H/{H / spacing:.1f})", wall,
                   [rel_row("period at g2, s", periods["g2"], T, 0.02, "{:.4f}"),
                    rel_row("wave length from the g1–g4 phase lag, m", lam, lam_ref, 0.03, "{:.3f}"),
                    rel_row("H/S at g1 (transfer function), kd = {:.2f}".format(kd), heights["g1"] / stroke, hs, 0.10,
