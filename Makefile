@@ -6,7 +6,7 @@ DEMO_SECONDS ?= 4
 # The long-flume wave benchmark's particle spacing (0.005 m: 8 particles per wave height, hours on 2 cores).
 WAVE_BENCH_SPACING ?= 0.005
 
-.PHONY: all deps configure build demo test check-sanitizers bench soak clean
+.PHONY: all deps configure build demo test check-sanitizers bench soak validate clean
 
 all: build
 
@@ -43,6 +43,14 @@ bench: build
 # Soak (not CI): the beach scene for SOAK_SECONDS of wall time (default 600); memory and energy.
 soak: build
 	@bench/soak.sh $(BUILD_DIR)
+
+# The validation report (not part of `make test`): every case of validation/run.py at its stated
+# resolution, then docs/validation.md and docs/images/validation-*.png (< 1 h on 2 idle cores).
+# VALIDATE_QUICK=1: coarser, for development; VALIDATE_CASES=surge,hydrostatic: some cases only.
+VALIDATE_QUICK ?=
+VALIDATE_CASES ?=
+validate: build
+	@/usr/bin/python3 validation/run.py --build $(BUILD_DIR) $(if $(VALIDATE_QUICK),--quick) $(if $(VALIDATE_CASES),--cases $(VALIDATE_CASES))
 
 clean:
 	@rm -rf $(BUILD_DIR) build-asan build-tsan
