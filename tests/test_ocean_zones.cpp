@@ -122,6 +122,26 @@ TEST(OceanZones, OpenSidesHaveNoWallsAndGaugesOutsideReadTheFarField) {
     EXPECT_NEAR(world.surfaceHeight(7.5f, 0.1f), 0.4 + sea.elevation(7.5, 0.1, t), 1e-5);
 }
 
+TEST(OceanZones, ThreadCountsAndResumingChangeNothing) {
+    const OceanDef o = regularOcean(0.08, 0.5, 0.3, {OceanSide::MinusX, OceanSide::PlusX}, 0.3);
+    World one = openFlume(0.05f, 1.2f, o, 1), two = openFlume(0.05f, 1.2f, o, 2);
+    one.advance(0.6);
+    two.advance(0.6);
+    ASSERT_GT(one.stats().oceanRemoved + one.stats().oceanAdded, 0u);  // the zones did something
+    // Resume from a copy of the state in a world built from the same definitions.
+    World resumed = openFlume(0.05f, 1.2f, o, 1);
+    resumed.restoreState(one.saveState());
+    one.advance(0.2);
+    two.advance(0.2);
+    resumed.advance(0.2);
+    ASSERT_EQ(one.particles().size(), two.particles().size());
+    ASSERT_EQ(one.particles().size(), resumed.particles().size());
+    EXPECT_EQ(one.particles().position, two.particles().position);
+    EXPECT_EQ(one.particles().velocity, two.particles().velocity);
+    EXPECT_EQ(one.particles().position, resumed.particles().position);
+    EXPECT_EQ(one.particles().id, resumed.particles().id);
+}
+
 TEST(OceanZones, BadOceansAreRefusedNamingTheField) {
     WorldDef def;
     def.domainMax = {4.0f, 1.0f, 0.2f};
