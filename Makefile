@@ -19,9 +19,11 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-# The default scene (waves breaking on a beach) through `tide run`, frames and gauges.csv in out/demo.
+# The default scene (a directional sea around a pile, open on all four sides; docs/ocean.md)
+# through `tide run`: frames, gauges.csv and stats.json in out/demo. DEMO_SCENE picks another.
+DEMO_SCENE ?= scenes/ocean_pile.json
 demo: build
-	@$(BUILD_DIR)/bin/tide run scenes/beach.json --out out/demo --force --end-time $(DEMO_SECONDS)
+	@$(BUILD_DIR)/bin/tide run $(DEMO_SCENE) --out out/demo --force --end-time $(DEMO_SECONDS)
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)

@@ -156,6 +156,35 @@ TEST(OceanScene, RefusesZonesWiderThanTheRegionAndOpenSidesThatCannotBe) {
     EXPECT_EQ(problems[0], "ocean.open_sides[0]: -z is on the periodic z axis (domain.periodic): it cannot also be open");
 }
 
+TEST(OceanScene, SpreadingAndDirectionsOutOfRangeAreNamed) {
+    const auto one = [](const std::string& waves) {
+        const auto problems = problemsOf(sceneWith(R"({"depth": 0.7, "waves": )" + waves + "}"));
+        EXPECT_EQ(problems.size(), 1u) << waves;
+        return problems.empty() ? std::string() : problems.front();
+    };
+    EXPECT_EQ(one(R"({"type": "jonswap", "hs": 0.1, "tp": 3, "spreading": 2000})"),
+              "ocean.waves.spreading: must be > 0 and <= 1000, got 2000");
+    EXPECT_EQ(one(R"({"type": "jonswap", "hs": 0.1, "tp": 3, "spreading": 10, "directions": 500})"),
+              "ocean.waves.directions: must be >= 0 and <= 360, got 500");
+    EXPECT_EQ(one(R"({"type": "jonswap", "hs": 0.1, "tp": 3, "direction": -400})"),
+              "ocean.waves.direction: must be >= -360 and <= 360, got -400");
+    EXPECT_EQ(one(R"({"type": "regular", "height": 0.1, "period": 2, "spreading": 10})"),
+              "ocean.waves.spreading: does not apply to regular waves");
+}
+
+TEST(OceanScene, GaugesOutsideTheDomainReadTheFarField) {
+    const std::string gauges = R"(, "gauges": [{"name": "far", "x": -20, "z": 2}])";
+    // Without an ocean a gauge outside the domain is an error; with one it reads the sea.
+    const auto problems = problemsOf(R"({"domain": {"min": [0, 0, 0], "max": [6, 1.2, 4]}, "particle_spacing": 0.1,
+  "end_time": 0.1, "materials": [{"name": "water", "density": 1000}])" + gauges + "}");
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems.front(), "gauges[0]: (x, z) = (-20, 2) lies outside the domain");
+    const io::Scene scene = parse(sceneWith(R"({"depth": 0.7, "open_sides": ["-x"], "zone_width": 1,
+        "waves": {"type": "regular", "height": 0.1, "period": 2}})", gauges));
+    ASSERT_EQ(scene.gauges.size(), 1u);
+    EXPECT_EQ(scene.gauges.front().x, -20.0f);
+}
+
 TEST(OceanScene, SchemaAgreesWithTheParser) {
     // Debian's python3-jsonschema: scenes the parser takes pass the schema, and the contract
     // mistakes it refuses fail it.

@@ -57,6 +57,15 @@ void writeStats(const fs::path& file, const World& world, double wall, std::uint
     j["divergence_iterations_mean"] =
         s.steps ? static_cast<double>(s.divergenceIterationsSum) / static_cast<double>(s.steps) : 0.0;
     j["pressure_unconverged_steps"] = s.unconvergedSolves;
+    if (world.hasOcean()) {
+        // The coupling zones' bookkeeping (issue 43): what they added and removed, and their
+        // share of the steps' wall time.
+        const PhaseSeconds& p = s.phaseSeconds;
+        const double steps = p.neighborSearch + p.density + p.pressureSolve + p.nonPressureForces + p.integration + p.coupling;
+        j["ocean_particles_added"] = s.oceanAdded;
+        j["ocean_particles_removed"] = s.oceanRemoved;
+        j["ocean_coupling_share"] = steps > 0.0 ? p.coupling / steps : 0.0;
+    }
     io::writeFileAtomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
 

@@ -103,7 +103,7 @@ void reportOcean(const OceanDef& o, const WorldDef& w) {
     else
         std::printf("  zones    %.3g m%s on %s\n", oceanZoneWidth(o, g), o.zoneWidth > 0.0 ? "" : " (one peak wavelength)",
                     sides.c_str());
-    std::printf("  note     the far field is parsed and checked; its coupling to the particles is not simulated yet\n");
+    std::printf("  still    water fills the domain to %g m; open sides have no walls (docs/ocean.md)\n", o.depth);
     // Acceptance item 3 of the ocean's issue asks for at least 10 particles per wave height.
     if (height / spacing < 10.0)
         std::fprintf(stderr, "tide: warning: ocean: %.1f particles per wave height (%g m / %g m): fewer than 10 "

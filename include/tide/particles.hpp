@@ -48,6 +48,9 @@ public:
     void append(const glm::vec3& x, const glm::vec3& v, float m, MaterialIndex mat, float rho0, float c = 0.0f);
     /// Reorder every array so that new[k] = old[order[k]]; order is a permutation of [0, size()).
     void permute(std::span<const std::uint32_t> order);
+    /// Keep the particles whose keep[i] is non-zero, in their order, and drop the others
+    /// (an open boundary's outflow). keep has size().
+    void retain(std::span<const std::uint8_t> keep);
     /// Drop every particle.
     void clear();
     /// The id the next appended particle gets.

@@ -16,6 +16,7 @@
 #include <glm/vec3.hpp>
 
 #include <tide/defs.hpp>
+#include <tide/ocean.hpp>
 #include <tide/particles.hpp>
 
 namespace tide {
@@ -35,6 +36,7 @@ struct PhaseSeconds {
     double pressureSolve = 0.0;      ///< pressure forces, or the iterations of an implicit solve
     double nonPressureForces = 0.0;  ///< gravity, viscosity, XSPH
     double integration = 0.0;        ///< time step, positions, walls and obstacles, emitters, statistics
+    double coupling = 0.0;           ///< an ocean's coupling zones: relaxation, outflow, inflow
 };
 
 /// Figures of the last step and running totals.
@@ -59,6 +61,8 @@ struct WorldStats {
     double dtSum = 0.0;                 ///< s, simulated time stepped
     float maxMeanDensityError = 0.0f;   ///< largest per-step meanDensityError
     float maxMeanCompression = 0.0f;    ///< largest per-step meanCompression
+    std::uint64_t oceanAdded = 0;       ///< particles an ocean's inflow strips added
+    std::uint64_t oceanRemoved = 0;     ///< particles that left through an ocean's open sides
     double sumMeanDensityError = 0.0;   ///< Σ over steps of meanDensityError (÷ steps = average)
     PhaseSeconds phaseSeconds;          ///< where the steps' wall time went
 };
@@ -270,8 +274,27 @@ public:
     /// Add a damping zone that absorbs waves (see DampingZoneDef).
     void addDampingZone(const DampingZoneDef& zone);
 
+    /// Couple the domain (the near field) to a far-field sea (issue 43; docs/ocean.md): the
+    /// sides in ocean.openSides lose their walls and get coupling zones of width
+    /// oceanZoneWidth(ocean), where particle velocities relax towards the sea's, particles
+    /// past the open face are removed and particles of `material` are added where the sea's
+    /// water stands and none is. The sea's still water is at domainMin.y + ocean.depth. Call it
+    /// before obstacles and blocks (the walls are sampled again) and once; then fillOcean().
+    /// Throws std::invalid_argument naming the field at fault (ocean.*, a periodic open axis,
+    /// a zone wider than the domain, a wave maker with an open -x side).
+    void setOcean(const OceanDef& ocean, MaterialIndex material = 0);
+    /// Fill the domain with the ocean's still water, up to its depth, on the lattice (leaving
+    /// out solids as addBlock does). Call after obstacles.
+    AddStatus fillOcean();
+    /// Whether setOcean was called.
+    [[nodiscard]] bool hasOcean() const;
+    /// The far field's surface height y at (x, z) now (ramped in over the first peak period,
+    /// as the zones see it), m. Throws std::logic_error without an ocean.
+    [[nodiscard]] double oceanSurfaceHeight(double x, double z) const;
+
     /// Free-surface height y at (x, z), m: where the SPH colour field of the fluid crosses ½
-    /// on the vertical line (DualSPHysics' gauge criterion); NaN where the line is dry.
+    /// on the vertical line (DualSPHysics' gauge criterion); NaN where the line is dry. With an
+    /// ocean, outside the domain's x–z extent: the far field's (oceanSurfaceHeight).
     [[nodiscard]] float surfaceHeight(float x, float z) const;
     /// Density, pressure and velocity interpolated at a point (Shepard-normalised SPH sum).
     [[nodiscard]] ProbeSample probe(const glm::vec3& point) const;

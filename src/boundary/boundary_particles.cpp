@@ -37,7 +37,7 @@ std::vector<float> axisCoordinates(float lo, float hi, float spacing, int layers
 }  // namespace
 
 void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& max, float spacing, int layers,
-                                       float particleVolume, float searchRadius, int threads) {
+                                       float particleVolume, float searchRadius, int threads, unsigned openFaces) {
     std::vector<bool> inX, inY, inZ;
     const auto layersAlong = [&](int axis) { return periodic.periodic(axis) ? 0 : layers; };
     const auto xs = axisCoordinates(min.x, max.x, spacing, layersAlong(0), inX);
@@ -54,6 +54,15 @@ void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& ma
         for (std::size_t j = 0; j < ys.size(); ++j)
             for (std::size_t i = 0; i < xs.size(); ++i)
                 if (!(inX[i] && inY[j] && inZ[k])) {
+                    const std::size_t at[3] = {i, j, k};
+                    const std::vector<bool>* in[3] = {&inX, &inY, &inZ};
+                    bool open = false;
+                    for (int axis = 0; axis < 3; ++axis)
+                        if (!(*in[axis])[at[axis]]) {
+                            const bool maxSide = at[axis] >= static_cast<std::size_t>(layersAlong(axis));
+                            open = open || (openFaces >> (2 * axis + (maxSide ? 1 : 0)) & 1u) != 0;
+                        }
+                    if (open) continue;
                     const glm::vec3 x(xs[i], ys[j], zs[k]);
                     position.push_back(x);
                     // Which face: the axis it lies most layers outside along (x, z, y on ties).

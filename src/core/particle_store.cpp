@@ -62,6 +62,31 @@ void permuteInPlace(std::vector<T>& values, std::span<const std::uint32_t> order
 }
 }  // namespace
 
+namespace {
+template <class T>
+void retainIn(std::vector<T>& values, std::span<const std::uint8_t> keep) {
+    std::size_t kept = 0;
+    for (std::size_t i = 0; i < values.size(); ++i)
+        if (keep[i]) values[kept++] = values[i];
+    values.resize(kept);
+}
+}  // namespace
+
+void ParticleStore::retain(std::span<const std::uint8_t> keep) {
+    assert(keep.size() == size());
+    retainIn(position, keep);
+    retainIn(velocity, keep);
+    retainIn(acceleration, keep);
+    retainIn(density, keep);
+    retainIn(pressure, keep);
+    retainIn(mass, keep);
+    retainIn(warmKappa, keep);
+    retainIn(warmDivergence, keep);
+    retainIn(concentration, keep);
+    retainIn(material, keep);
+    retainIn(id, keep);
+}
+
 void ParticleStore::permute(std::span<const std::uint32_t> order) {
     assert(order.size() == size());
     std::vector<bool> placed;

@@ -9,7 +9,7 @@
 
 namespace tide {
 
-enum class Phase { NeighborSearch, Density, PressureSolve, NonPressureForces, Integration };
+enum class Phase { NeighborSearch, Density, PressureSolve, NonPressureForces, Integration, Coupling };
 
 class PhaseClock {
 public:
@@ -25,6 +25,7 @@ public:
             case Phase::PressureSolve: sink_->pressureSolve += seconds; break;
             case Phase::NonPressureForces: sink_->nonPressureForces += seconds; break;
             case Phase::Integration: sink_->integration += seconds; break;
+            case Phase::Coupling: sink_->coupling += seconds; break;
         }
     }
 

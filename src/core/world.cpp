@@ -33,6 +33,7 @@
 #include "loads/wall_loads.hpp"
 #include "neighbors/neighbor_list.hpp"
 #include "neighbors/uniform_grid.hpp"
+#include "ocean/relaxation_zone.hpp"
 #include "solvers/diffusion_cleary1999.hpp"
 #include "solvers/solver.hpp"
 #include "sources/emitter.hpp"
@@ -190,6 +191,29 @@ struct World::Impl {
     glm::vec3 latticeOrigin;
     glm::vec3 wallsOrigin;  ///< latticeOrigin when the walls were sampled (wallPlanes)
     std::vector<DampingZoneDef> dampingZones;
+    /// An ocean's coupling zones (setOcean), the faces they open (no walls there) and the
+    /// material their inflow adds.
+    std::unique_ptr<ocean::RelaxationZones> zones;
+    OceanDef oceanDef;
+    unsigned openFaces = 0;
+    MaterialIndex oceanMaterial = 0;
+    /// The wall box's planes, unbounded across periodic axes and open faces.
+    [[nodiscard]] std::pair<glm::dvec3, glm::dvec3> wallLimits(double inf) const {
+        glm::dvec3 lo = def.domainMin, hi = def.domainMax;
+        for (int axis = 0; axis < 3; ++axis) {
+            if (periodic.periodic(axis) || (openFaces >> (2 * axis) & 1u)) lo[axis] = -inf;
+            if (periodic.periodic(axis) || (openFaces >> (2 * axis + 1) & 1u)) hi[axis] = inf;
+        }
+        return {lo, hi};
+    }
+    /// Relaxation, outflow and inflow of the ocean's zones over a step of dt ending at `end`.
+    void couple(double end, double dt) {
+        zones->relax(particles, end, dt, threads);
+        stats.oceanRemoved += zones->removeOutflow(particles);
+        stats.oceanAdded += zones->refill(particles, end, massOf(oceanMaterial), oceanMaterial,
+                                          materials[oceanMaterial].restDensity, def.capacity,
+                                          [&](const glm::vec3& x) { return roomFor(x, Fill::Block); });
+    }
     /// Loads: the solids (six wall faces, then paddles and obstacles as added; their index is
     /// BoundaryParticles::solid), each obstacle's reference point at rest, the pair forces of
     /// the step, the last step's loads and the momentum exchanged since takeMeanSolidLoads().
@@ -312,11 +336,11 @@ struct World::Impl {
             bodySystem = std::make_unique<bodies::BodySystem>(glm::dvec3(def.gravity));
             if (def.walls) {
                 glm::dvec3 lo = wallsMin(), hi = wallsMax();
-                for (int axis = 0; axis < 3; ++axis)
-                    if (periodic.periodic(axis)) {
-                        lo[axis] = -1e30;
-                        hi[axis] = 1e30;
-                    }
+                const auto [openLo, openHi] = wallLimits(1e30);
+                for (int axis = 0; axis < 3; ++axis) {
+                    if (openLo[axis] == -1e30) lo[axis] = -1e30;
+                    if (openHi[axis] == 1e30) hi[axis] = 1e30;
+                }
                 bodySystem->setWalls(lo, hi);
             }
             for (std::size_t k = 0; k < fixedObstacles.size(); ++k) bodySystem->addFixedObstacle(fixedObstacles[k], fixedObstacles[k].name);
@@ -349,7 +373,7 @@ struct World::Impl {
     void sampleWalls() {
         wallsOrigin = latticeOrigin;
         const int layers = static_cast<int>(std::ceil(h / def.particleSpacing));
-        boundary.sampleBoxShell(wallsMin(), wallsMax(), def.particleSpacing, layers, 1.0f / latticeSum, h, threads);
+        boundary.sampleBoxShell(wallsMin(), wallsMax(), def.particleSpacing, layers, 1.0f / latticeSum, h, threads, openFaces);
     }
 
     /// Where the walls stand: on the lattice blocks fill (cell corners at latticeOrigin when
@@ -935,8 +959,66 @@ void World::addDampingZone(const DampingZoneDef& zone) {
     impl_->dampingZones.push_back(zone);
 }
 
+void World::setOcean(const OceanDef& ocean, MaterialIndex material) {
+    Impl& w = *impl_;
+    validateOcean(ocean);
+    if (w.zones) throw std::invalid_argument("ocean: the world has an ocean already");
+    if (material >= w.materials.size())
+        throw std::invalid_argument("ocean.material: no material " + std::to_string(material));
+    if (!w.obstacles.empty() || w.particles.size() != 0)
+        throw std::invalid_argument("ocean: set it before obstacles and particles (the walls are sampled again)");
+    const float height = w.def.domainMax.y - w.def.domainMin.y;
+    if (!(ocean.depth <= height))
+        throw std::invalid_argument("ocean.depth: must not exceed the domain height " + show(height) + ", got " +
+                                    show(static_cast<float>(ocean.depth)));
+    unsigned faces = 0;
+    for (std::size_t i = 0; i < ocean.openSides.size(); ++i) {
+        const OceanSide side = ocean.openSides[i];
+        const int axis = side == OceanSide::MinusX || side == OceanSide::PlusX ? 0 : 2;
+        const std::string where = "ocean.open_sides[" + std::to_string(i) + "]";
+        if (w.periodic.periodic(axis))
+            throw std::invalid_argument(where + ": " + oceanSideName(side) + " is on a periodic axis (domain.periodic)");
+        if (side == OceanSide::MinusX && !w.paddles.empty())
+            throw std::invalid_argument(where + ": -x has the wave maker on it: a side is either open or a paddle");
+        faces |= 1u << (2 * axis + (side == OceanSide::PlusX || side == OceanSide::PlusZ ? 1 : 0));
+    }
+    ocean::NearField near;
+    near.min = w.wallsMin();
+    near.max = w.wallsMax();
+    near.stillWaterY = static_cast<double>(w.def.domainMin.y) + ocean.depth;
+    near.spacing = w.def.particleSpacing;
+    near.latticeOrigin = w.latticeOrigin;
+    const double g = std::max(1e-6, static_cast<double>(glm::length(w.def.gravity)));
+    w.zones = std::make_unique<ocean::RelaxationZones>(ocean, near, g);
+    w.oceanDef = ocean;
+    w.oceanMaterial = material;
+    w.openFaces = faces;
+    if (w.def.walls) w.sampleWalls();
+}
+
+AddStatus World::fillOcean() {
+    const Impl& w = *impl_;
+    if (!w.zones) throw std::logic_error("fillOcean: no ocean (setOcean first)");
+    BlockDef block;
+    block.min = w.wallsMin();
+    block.max = w.wallsMax();
+    block.max.y = static_cast<float>(static_cast<double>(w.def.domainMin.y) + w.oceanDef.depth);
+    block.material = w.oceanMaterial;
+    return addBlock(block);
+}
+
+bool World::hasOcean() const { return impl_->zones != nullptr; }
+
+double World::oceanSurfaceHeight(double x, double z) const {
+    const Impl& w = *impl_;
+    if (!w.zones) throw std::logic_error("oceanSurfaceHeight: no ocean (setOcean first)");
+    return w.zones->surfaceY(x, z, w.time);
+}
+
 float World::surfaceHeight(float x, float z) const {
     const Impl& w = *impl_;
+    if (w.zones && (x < w.def.domainMin.x || x > w.def.domainMax.x || z < w.def.domainMin.z || z > w.def.domainMax.z))
+        return static_cast<float>(oceanSurfaceHeight(x, z));
     return freeSurfaceHeight(w.particles, w.materials, w.periodic, w.kernel(), x, z);
 }
 
@@ -1005,7 +1087,10 @@ double World::Impl::step(double maxDt, Clock clockMode) {
         w.wallLoads.reset(w.boundaryNeighbors.slotCount());
         ctx.loads = &w.wallLoads;
     }
+    if (w.zones) w.zones->holdBegin(w.particles);
     const double dt = w.solver->step(ctx);
+    // An ocean's buffers move with the far field, whatever the pressure did to them.
+    if (w.zones) w.zones->holdEnd(w.particles, w.time, dt, held, w.threads);
     if (loads) w.sumLoads(dt);
     // Bodies move over the step under its load (weak coupling: the fluid saw them where they
     // were at its start); the strays are then pushed out of them where they end.
@@ -1030,15 +1115,9 @@ double World::Impl::step(double maxDt, Clock clockMode) {
         if (loads) w.contacts.book(w.particles, w.threads, [&](std::uint32_t, const glm::vec3&) { return w.solidOfObstacle(m.index); });
     }
     if (w.def.walls) {
-        // No walls across a periodic axis.
-        constexpr float inf = std::numeric_limits<float>::infinity();
-        glm::vec3 lo = w.def.domainMin, hi = w.def.domainMax;
-        for (int axis = 0; axis < 3; ++axis)
-            if (w.periodic.periodic(axis)) {
-                lo[axis] = -inf;
-                hi[axis] = inf;
-            }
-        const WallBox walls{lo, hi, margin, w.def.wallRestitution};
+        // No walls across a periodic axis, nor on an ocean's open sides.
+        const auto [lo, hi] = w.wallLimits(std::numeric_limits<double>::infinity());
+        const WallBox walls{glm::vec3(lo), glm::vec3(hi), margin, w.def.wallRestitution};
         walls.enforce(w.particles, w.threads);
         // The face that pushed: along the largest change, the min face for a push towards +.
         if (loads)
@@ -1066,6 +1145,11 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     }
     if (loads) w.contacts.finish(dt, w.lastLoads, w.loadImpulse);
     applyDampingZones(w.dampingZones, w.particles, dt, w.threads);
+    if (w.zones) {
+        clock.lap(Phase::Integration);
+        w.couple(end, dt);
+        clock.lap(Phase::Coupling);
+    }
     if (w.periodic.any)
         parallelFor(w.particles.size(), w.threads, [&](std::uint32_t i) {
             w.particles.position[i] = w.periodic.wrap(w.particles.position[i]);

@@ -95,6 +95,13 @@ SceneEstimate estimate(const Scene& scene) {
     for (const BlockDef& b : scene.blocks)
         e.initialParticles[b.material] =
             saturatingAdd(e.initialParticles[b.material], Lattice::onDomainLattice(b.min, b.max, s, latticeOrigin).size());
+    // An ocean's still water (World::fillOcean; the inflow keeps the count near it).
+    if (scene.ocean && !scene.materials.empty()) {
+        glm::vec3 top = scene.world.domainMax;
+        top.y = static_cast<float>(scene.world.domainMin.y + scene.ocean->depth);
+        e.initialParticles[0] =
+            saturatingAdd(e.initialParticles[0], Lattice::onDomainLattice(scene.world.domainMin, top, s, latticeOrigin).size());
+    }
     for (const EmitterDef& em : scene.emitters) {
         const double active = std::min(em.end, scene.endTime) - em.start;
         if (active <= 0.0) continue;
@@ -120,8 +127,12 @@ World buildWorld(const Scene& scene) {
     for (const MaterialPairDef& pair : scene.materialPairs) world.setMaterialPair(pair);
     // The wave maker first: obstacles and blocks are sampled on a lattice that starts at its face.
     for (const WaveMakerDef& w : scene.waveMakers) world.addWaveMaker(w);
+    // The ocean opens its sides before obstacles are sampled, and fills its still water after.
+    if (scene.ocean) world.setOcean(*scene.ocean);
     for (const ObstacleDef& o : scene.obstacles) world.addObstacle(o);
     for (const DampingZoneDef& d : scene.dampingZones) world.addDampingZone(d);
+    if (scene.ocean && world.fillOcean() != AddStatus::Added)
+        throw SceneError({"ocean: its still water does not fit (over capacity)"});
     for (std::size_t i = 0; i < scene.blocks.size(); ++i)
         if (world.addBlock(scene.blocks[i]) != AddStatus::Added)
             throw SceneError({"blocks[" + std::to_string(i) + "]: does not fit (outside the domain or over capacity)"});

@@ -965,7 +965,8 @@ void readGaugesAndProbes(Reader& r, const json& root, Scene& scene, float scale,
         const auto z = r.number(gauges[i], "z", path, false, -1e6, 1e6);
         if (!name || !x || !checkColumnName(r, *name, path, used)) continue;
         GaugeDef g{*name, static_cast<float>(*x) * scale, z ? static_cast<float>(*z) * scale : 0.5f * (w.domainMin.z + w.domainMax.z)};
-        if (domainOk && (g.x < w.domainMin.x || g.x > w.domainMax.x || g.z < w.domainMin.z || g.z > w.domainMax.z)) {
+        // With an ocean, a gauge outside the near field reads the far field.
+        if (domainOk && !scene.ocean && (g.x < w.domainMin.x || g.x > w.domainMax.x || g.z < w.domainMin.z || g.z > w.domainMax.z)) {
             r.fail(path, "(x, z) = (" + show(gauges[i].at("x")) + ", " + (z ? show(gauges[i].at("z")) : std::string("centre")) +
                              ") lies outside the domain");
             continue;

@@ -1,0 +1,124 @@
+#pragma once
+/// \file
+/// Coupling zones between the far-field sea and the SPH near field (issue 43): on each open
+/// side of the domain, a band of width W in which particle velocities relax towards the far
+/// field's, an outflow edge where particles leave, and an inflow strip where particles are
+/// added wherever the far field's water stands and no particle is.
+///
+/// The relaxation follows the generating–absorbing zones of Jacobsen, Fuhrman & Fredsøe 2012
+/// ("A wave generation toolbox for the open-source CFD library: OpenFoam", Int. J. Numer.
+/// Meth. Fluids 70, eq. 10–11: u ← α u_computed + (1 − α) u_target, α_R(χ) = 1 − (exp(χ^3.5)
+/// − 1)/(exp(1) − 1)), used in SPH by Altomare et al. 2018 (DualSPHysics' relaxation zone,
+/// Coastal Engineering 138). Their blend acts once per step, so its strength depends on the
+/// step; here it is the exact solution of du/dt = −(u − u_far)/τ over the step,
+///   u ← u_far + (u − u_far) exp(−Δt/τ(x)),   1/τ(x) = (1 − α_R(χ)) / τ0,
+/// with χ = 1 − s/W (s the distance to the open face: χ = 1 at the outer edge, 0 at the inner)
+/// and τ0 = Tp/kRelaxationSteps: the same relaxation whatever the step. A particle in two
+/// bands (a corner) takes the nearer face's χ.
+///
+/// Along the open face, a buffer kBufferSpacings deep has no water beyond it: under the
+/// hydrostatic pressure of the water inside, its particles would spill out as a dam breaks.
+/// Its particles are driven kinematically instead (an inflow/outflow buffer of prescribed
+/// velocity, as Lastiwka, Basa & Quinlan 2009, "Permeable and non-reflecting boundary
+/// conditions in SPH", Int. J. Numer. Meth. Fluids 61, and DualSPHysics' open boundaries,
+/// Tafuni et al. 2018, do): each step moves them with the far field's velocity, whatever the
+/// pressure did, while they still fill the kernel support of the water inside.
+///
+/// One-way: the far field does not see the near field. It is ramped in over the first peak
+/// period (½(1 − cos πt/Tp)), so still water starts smoothly.
+
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include <tide/ocean.hpp>
+#include <tide/particles.hpp>
+
+#include "ocean/sea.hpp"
+
+namespace tide::ocean {
+
+/// τ0 = Tp / this: at the outer edge a particle follows the far field within a small fraction
+/// of a period.
+inline constexpr double kRelaxationSteps = 200.0;
+/// The kinematic buffer along an open face, in spacings (1.5 kernel supports at a support
+/// of 2 spacings: the water inside sees full, moving neighbours).
+inline constexpr double kBufferSpacings = 3.0;
+
+/// Where the near field is: its faces (the planes the walls would stand on), its floor, still
+/// water and lattice.
+struct NearField {
+    glm::vec3 min{0.0f};          ///< faces, m (the open sides' outer edges)
+    glm::vec3 max{0.0f};
+    double stillWaterY = 0.0;     ///< world y of the sea's still water (floor + depth), m
+    float spacing = 0.02f;        ///< the particles' lattice spacing, m
+    glm::vec3 latticeOrigin{0.0f};  ///< lattice points at origin + (k + ½) spacing
+};
+
+/// Counts of what the zones did (running totals since creation).
+struct ZoneTotals {
+    std::uint64_t added = 0;    ///< particles added in the inflow strips
+    std::uint64_t removed = 0;  ///< particles removed past the outer edges
+};
+
+/// The coupling zones of one ocean around one near field.
+class RelaxationZones {
+public:
+    /// Throws std::invalid_argument (naming ocean.zone_width) when the zones of an axis do not
+    /// fit in the near field side by side.
+    RelaxationZones(const OceanDef& def, const NearField& near, double g);
+
+    /// The faces the zones open, as a bit mask (bit 2·axis + 1 for the max side).
+    [[nodiscard]] unsigned openFaces() const { return openFaces_; }
+    [[nodiscard]] double width() const { return width_; }
+    [[nodiscard]] const Sea& sea() const { return sea_; }
+    /// The ramp factor of the far field at time t (0 at t = 0, 1 after one peak period).
+    [[nodiscard]] double ramp(double t) const;
+    /// 1/τ at x: 0 outside the bands, 1/τ0 at the outer edge, 1/s.
+    [[nodiscard]] double rate(const glm::vec3& x) const;
+    /// The far field's surface (world y) at (x, z), ramped, m.
+    [[nodiscard]] double surfaceY(double x, double z, double t) const;
+    /// The far field's velocity at a world point, ramped, m/s.
+    [[nodiscard]] glm::dvec3 velocity(const glm::vec3& x, double t) const;
+    /// Whether x is past an open face (outside the near field through it).
+    [[nodiscard]] bool outside(const glm::vec3& x) const;
+
+    /// Records the particles of the buffers and where they are, before a step.
+    void holdBegin(const ParticleStore& particles);
+    /// Moves the recorded particles from where they were by dt at the far field's velocity
+    /// (taken at t0 + dt/2), and gives them its velocity at t0 + dt; the step's arrays must be
+    /// in the order holdBegin saw. `clockHeld` (a settling pre-roll): the far field of t0.
+    void holdEnd(ParticleStore& particles, double t0, double dt, bool clockHeld, int threads);
+    /// Relaxes every particle in a band over a step of dt ending at time t.
+    void relax(ParticleStore& particles, double t, double dt, int threads) const;
+    /// Removes the particles past an open face; returns how many.
+    std::uint32_t removeOutflow(ParticleStore& particles);
+    /// Adds a particle (far-field velocity, given mass and rest density) at each lattice point
+    /// of the inflow strips that lies under the far field's surface, has room (`room`: the
+    /// solids) and has no particle within 0.9 spacing; at most `capacity` particles in all.
+    /// Returns how many.
+    std::uint32_t refill(ParticleStore& particles, double t, float mass, MaterialIndex material, float restDensity,
+                         std::uint32_t capacity, const std::function<bool(const glm::vec3&)>& room);
+    [[nodiscard]] const ZoneTotals& totals() const { return totals_; }
+
+private:
+    // Distance from x to the nearest open face, inward; +inf with no open face.
+    [[nodiscard]] double distanceToOpenFace(const glm::vec3& x) const;
+
+    Sea sea_;
+    NearField near_;
+    std::vector<OceanSide> sides_;
+    unsigned openFaces_ = 0;
+    double width_ = 0.0;
+    double rampTime_ = 0.0;
+    double tau0_ = 0.0;
+    ZoneTotals totals_;
+    std::vector<std::uint8_t> keep_;  // scratch of removeOutflow
+    std::vector<std::uint32_t> held_;  // the buffers' particles at the step's start
+    std::vector<glm::vec3> heldFrom_;
+};
+
+}  // namespace tide::ocean
