@@ -65,9 +65,9 @@ constexpr std::pair<double, double> kKoshizukaOka[] = {{0.769, 1.252}, {1.153, 1
 // Koshizuka & Oka's column, L = 0.146 m wide and 2L high in a tank 4L long, at L/14 spacing
 // (one periodic cell across z: 2D). The surge front is the farthest particle of the lowest
 // three layers (as examples/python/dam_break_surge.py measures it). Within 10 % of the
-// experiment until T = 1.6 (measured +3.5, +9.5, +8.2 %); later the front runs ahead of it, as
+// experiment until T = 1.6 (measured +2.5, +7.4, +6.0 %); later the front runs ahead of it, as
 // every inviscid solver here does (dfsph at L/40: 14–21 % at T 1.9–2.7, docs/python.md; at
-// this resolution +15, +17, +20 %; pbf +11, +16, +21 %): the experiment's gate and floor
+// this resolution +15, +17, +20 %; pbf +9, +13, +18 %): the experiment's gate and floor
 // friction slow the real surge, the walls here are free-slip. Those rows are held ahead of
 // the experiment and within 25 %.
 TEST(PbfSolver, DamBreakSurgeFrontFollowsKoshizukaOka) {

@@ -275,7 +275,10 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     }
     if (auto v = r.number(j, "max_iterations", path, false, 1.0, 10000.0)) s.maxIterations = static_cast<int>(*v);
     if (s.maxIterations < s.minIterations) r.fail(join(path, "max_iterations"), "must not be below min_iterations");
-    if (auto v = r.number(j, "constraint_iterations", path, false, 1.0, 100.0)) s.constraintIterations = static_cast<int>(*v);
+    if (auto v = r.number(j, "constraint_iterations", path, false, 1.0, 100.0)) {
+        if (*v != std::floor(*v)) r.fail(join(path, "constraint_iterations"), "must be a whole number, got " + std::to_string(*v));
+        s.constraintIterations = static_cast<int>(*v);
+    }
     if (auto v = r.number(j, "vorticity", path, false, 0.0, 10.0)) s.vorticity = static_cast<float>(*v);
     if (auto v = r.number(j, "support_ratio", path, false, 1.0, 4.0)) scene.world.supportRatio = static_cast<float>(*v);
     // Wendland C2 wants a wider support than the cubic spline (at 2 spacings a standing wave

@@ -21,9 +21,9 @@ constexpr float kTensileDq = 0.2f;
 /// 0.01: 0.04–0.10 m/s, 0.1: 0.026–0.048, 0.3: 0.021–0.047 (mean compression 0.6, 0.7, 0.8 %).
 constexpr float kRelaxation = 0.1f;
 /// XSPH's c when SolverDef::xsph is negative: more than the paper's 0.01, which leaves the
-/// particle-scale jitter of 4 iterations (a 0.2 m tank at rest at 2 cm: 0.05–0.1 m/s at 2 s
-/// with 0.01 at ε 0.01, 0.04–0.10 with 0.05, 0.03–0.05 with 0.2).
-constexpr float kDefaultXsph = 0.05f;
+/// particle-scale jitter of 4 iterations. A 0.2 m tank at rest at 2 cm, max speed over its
+/// 1.5–2 s: 0.03–0.056 m/s with 0.05, 0.035–0.061 with 0.1, 0.013–0.034 with 0.2.
+constexpr float kDefaultXsph = 0.2f;
 /// Longest correction a particle takes in one iteration, in supports h. Jacobi corrections
 /// beyond it are the linearisation failing (a spray particle driven onto a wall, a light
 /// particle squeezed between heavy ones, which ~30 neighbours' constraints each move as if
@@ -70,15 +70,25 @@ void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
     const float restTensile = restRatio * restRatio * restRatio * restRatio;
     const glm::vec3* wallX = ctx.boundary.moving ? wallPosition_.data() : ctx.boundary.position.data();
     const float vb = ctx.boundary.volume;
+    // (x_j, V_j) and w_j V_j², packed: one load per neighbour for each.
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t j) {
+        rows_[j] = glm::vec4(p.position[j], volume_[j]);
+        weightedVolume2_[j] = weight_[j] * volume_[j] * volume_[j];
+    });
+    withPairVector(ctx.periodic, [&](auto pairVector) {
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
+        const float vi = volume_[i];
         const auto list = ctx.neighbors.of(i);
         const std::uint64_t slot = ctx.neighbors.offset(i);
+        float* factor = pairFactor_.data() + slot;
+        float* tensile = pairCorrection_.data() + slot;
         float sumW = self, weightedSquares = 0.0f;
         glm::vec3 gradient(0.0f);
         for (std::size_t k = 0; k < list.size(); ++k) {
             const std::uint32_t j = list[k];
-            const glm::vec3 d = ctx.delta(xi, p.position[j]);
+            const glm::vec4 row = rows_[j];
+            const glm::vec3 d = pairVector(xi, glm::vec3(row));
             const float r2 = glm::dot(d, d);
             float f = 0.0f, s = 0.0f;
             if (r2 < h2) {
@@ -88,13 +98,14 @@ void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
                 f = r > 0.0f ? spiky.gradientScale(r) / r : 0.0f;
                 const glm::vec3 g = f * d;
                 gradient += g;
-                weightedSquares += weight_[j] * volume_[j] * volume_[j] * glm::dot(g, g);
+                weightedSquares += weightedVolume2_[j] * glm::dot(g, g);
                 const float ratio = wij * invWdq;
                 const float ratio2 = ratio * ratio;
-                s = tensileScale * std::max(ratio2 * ratio2 - restTensile, 0.0f);  // eq. 13, n = 4
+                // eq. 13, n = 4, times the pair's mean volume (eq. 14)
+                s = 0.5f * (vi + row.w) * tensileScale * std::max(ratio2 * ratio2 - restTensile, 0.0f);
             }
-            pairFactor_[slot + k] = f;
-            pairCorrection_[slot + k] = s;
+            factor[k] = f;
+            tensile[k] = s;
         }
         float wallSum = 0.0f;
         glm::vec3 wallGradient(0.0f);
@@ -107,7 +118,6 @@ void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
             if (r > 0.0f) wallGradient += (spiky.gradientScale(r) / r) * d;
         }
         wallGradient_[i] = vb * wallGradient;
-        const float vi = volume_[i];
         const float c = vi * sumW + vb * wallSum - 1.0f;  // eq. 1 over ρ0_i
         // ∇_i C_i = V_i Σ_j ∇W_ij + Σ_b V_b ∇W_ib; ∇_j C_i = −V_i ∇W_ij (here V_j: the pair's
         // correction moves j by its own volume's share, eq. 14).
@@ -116,27 +126,31 @@ void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
         lambda_[i] = c > 0.0f ? -c / denominator : 0.0f;  // eq. 11, unilateral
         if (last) p.density[i] = ctx.materials[p.material[i]].restDensity * (c + 1.0f);
     });
+    });
 }
 
 void PbfMacklin2013::computeCorrection(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const float cap = kMaxCorrection * ctx.supportRadius;
-    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
-        const glm::vec3 xi = p.position[i];
-        const auto list = ctx.neighbors.of(i);
-        const std::uint64_t slot = ctx.neighbors.offset(i);
-        const float li = lambda_[i] * volume_[i];
-        glm::vec3 dx(0.0f);
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            const float f = pairFactor_[slot + k];
-            if (f == 0.0f) continue;
-            const std::uint32_t j = list[k];
-            const float share = li + lambda_[j] * volume_[j] + 0.5f * (volume_[i] + volume_[j]) * pairCorrection_[slot + k];
-            dx += (share * f) * ctx.delta(xi, p.position[j]);  // eq. 14
-        }
-        const glm::vec3 correction = weight_[i] * (dx + lambda_[i] * wallGradient_[i]);
-        const float length = glm::length(correction);
-        correction_[i] = length > cap ? (cap / length) * correction : correction;
+    // (x_j, λ_j V_j), packed.
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t j) { rows_[j] = glm::vec4(p.position[j], lambda_[j] * volume_[j]); });
+    withPairVector(ctx.periodic, [&](auto pairVector) {
+        parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+            const glm::vec3 xi = p.position[i];
+            const auto list = ctx.neighbors.of(i);
+            const std::uint64_t slot = ctx.neighbors.offset(i);
+            const float* factor = pairFactor_.data() + slot;
+            const float* tensile = pairCorrection_.data() + slot;
+            const float li = rows_[i].w;
+            glm::vec3 dx(0.0f);
+            for (std::size_t k = 0; k < list.size(); ++k) {
+                const glm::vec4 row = rows_[list[k]];
+                dx += ((li + row.w + tensile[k]) * factor[k]) * pairVector(xi, glm::vec3(row));  // eq. 14
+            }
+            const glm::vec3 correction = weight_[i] * (dx + lambda_[i] * wallGradient_[i]);
+            const float length = glm::length(correction);
+            correction_[i] = length > cap ? (cap / length) * correction : correction;
+        });
     });
 }
 
@@ -187,6 +201,8 @@ double PbfMacklin2013::step(StepContext& ctx) {
     resizeScratch(lambda_, n);
     resizeScratch(wallGradient_, n);
     resizeScratch(correction_, n);
+    resizeScratch(rows_, n);
+    resizeScratch(weightedVolume2_, n);
     resizeScratch(pairFactor_, ctx.neighbors.slotCount());
     resizeScratch(pairCorrection_, ctx.neighbors.slotCount());
     const float referenceDensity = ctx.materials.empty() ? 1000.0f : ctx.materials[0].restDensity;
@@ -230,12 +246,13 @@ double PbfMacklin2013::step(StepContext& ctx) {
     ctx.lap(Phase::PressureSolve);
     // Lines 21–24: velocities from the positions, then vorticity confinement and XSPH.
     const float invDt = 1.0f / dt;
+    const float toPressure = -referenceDensity / (lastDt * lastDt);  // share/Δt² = 1/Δt_last²
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         // (x* − x)/Δt as v + Σ Δx/Δt: exact where nothing corrected (a coasting jet keeps its
         // layers; the difference of positions rounds at ~1e-7 of |x|, which split them).
         p.velocity[i] += invDt * moved_[i];
         // p = −ρ0_ref λ/Δt²: the SPH pressure whose acceleration moves i by Δx (the equivalent, for output).
-        p.pressure[i] = -referenceDensity * lambda_[i] * invDt * invDt;
+        p.pressure[i] = toPressure * lambda_[i];
     });
     if (ctx.solver.vorticity > 0.0f) confineVorticity(ctx, dt, ctx.solver.vorticity);
     xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : kDefaultXsph,

@@ -31,6 +31,7 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "solvers/solver.hpp"
 #include "solvers/xsph_monaghan1989.hpp"
@@ -66,8 +67,10 @@ private:
     std::vector<float> lambda_;          ///< λ_i, m²
     std::vector<glm::vec3> wallGradient_;  ///< Σ_b V_b ∇W_ib
     std::vector<glm::vec3> correction_;  ///< Δx_i of one iteration
+    std::vector<glm::vec4> rows_;        ///< (x_j, V_j) for solveLambda, (x_j, λ_j V_j) for computeCorrection
+    std::vector<float> weightedVolume2_; ///< w_j V_j²
     std::vector<float> pairFactor_;      ///< W'(r)/r of the spiky kernel per pair slot
-    std::vector<float> pairCorrection_;  ///< s_corr per pair slot, m²
+    std::vector<float> pairCorrection_;  ///< s_corr V̄ per pair slot, m⁵
     std::vector<glm::vec3> wallPosition_;  ///< x_b + Δt v_b (moving boundaries)
     std::vector<glm::vec3> vorticity_;   ///< ω_i
     XsphFilter xsph_;
