@@ -62,7 +62,13 @@ inline Options parse(int argc, char** argv) {
         else if (flag == "--speed") o.speed = static_cast<float>(number(0.0, 100.0));
         else if (flag == "--four") o.four = true;
         else if (flag == "--view") o.view = true;
-        else if (flag == "--help" || flag == "-h") {
+        else if (flag == "--solver") {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "%s: --solver needs a name\n", argv[0]);
+                std::exit(2);
+            }
+            o.solver = argv[++i];
+        } else if (flag == "--help" || flag == "-h") {
             usage(argv[0]);
             std::exit(0);
         } else {
