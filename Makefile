@@ -40,6 +40,7 @@ BENCH_SECONDS ?= 0.1
 bench: build
 	@$(BUILD_DIR)/bin/tide_bench --benchmark_counters_tabular=true
 	@$(BUILD_DIR)/bin/tide_scenarios --seconds $(BENCH_SECONDS)
+	@OMP_WAIT_POLICY=PASSIVE $(BUILD_DIR)/bin/tide_live_bench --seconds 8 --threads 2
 	@$(BUILD_DIR)/bin/tide_wave_bench --spacing $(WAVE_BENCH_SPACING)
 
 # Soak (not CI): the beach scene for SOAK_SECONDS of wall time (default 600); memory and energy.

@@ -24,13 +24,15 @@ struct Options {
     bool four = false;      ///< four jets of four materials (jets demo)
     double every = 1.0;     ///< simulated seconds between summary lines
     bool view = false;      ///< open the viewer instead of running headless
+    std::string solver = "pbf";  ///< the Fluid's solver (FluidSettings::solverNamed): pbf runs live
 };
 
 inline void usage(const char* program) {
     std::fprintf(stderr,
-                 "usage: %s [--seconds S] [--every S] [--fps F] [--threads N] [--speed V] [--four] [--view]\n"
+                 "usage: %s [--seconds S] [--every S] [--fps F] [--threads N] [--speed V] [--four] [--view] [--solver NAME]\n"
                  "  runs one of the seed's demos headless, printing a summary per simulated second;\n"
-                 "  --view opens the viewer on it instead (tide-view's window and controls)\n",
+                 "  --view opens the viewer on it instead (tide-view's window and controls);\n"
+                 "  --solver picks the Fluid's solver: pbf (live, default), classic, wcsph, pcisph, dfsph\n",
                  program);
 }
 
@@ -60,7 +62,13 @@ inline Options parse(int argc, char** argv) {
         else if (flag == "--speed") o.speed = static_cast<float>(number(0.0, 100.0));
         else if (flag == "--four") o.four = true;
         else if (flag == "--view") o.view = true;
-        else if (flag == "--help" || flag == "-h") {
+        else if (flag == "--solver") {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "%s: --solver needs a name\n", argv[0]);
+                std::exit(2);
+            }
+            o.solver = argv[++i];
+        } else if (flag == "--help" || flag == "-h") {
             usage(argv[0]);
             std::exit(0);
         } else {
@@ -72,10 +80,10 @@ inline Options parse(int argc, char** argv) {
     return o;
 }
 
-inline tide::FluidSettings settings(const Options& o, const char* method = "classic") {
+inline tide::FluidSettings settings(const Options& o) {
     tide::FluidSettings s;
     s.threads = o.threads;
-    s.solver.method = method;
+    s.solver = tide::FluidSettings::solverNamed(o.solver);
     return s;
 }
 
@@ -131,11 +139,11 @@ inline int run(const Options& o, const std::function<void(tide::Fluid&)>& setup,
 }
 
 /// The seed's container: a box 40 units wide, centred on 0 (1 m at the default scale).
-/// Several fluids of different density need a solver with density-contrast SPH (dfsph,
+/// Several fluids of different density need a solver with a density contrast (pbf, dfsph,
 /// pcisph, wcsph; the seed's classic smears density across their interfaces).
-inline void initSeedTank(tide::Fluid& fluid, const Options& o, const char* method = "classic") {
+inline void initSeedTank(tide::Fluid& fluid, const Options& o) {
     fluid.init(65535, glm::vec3(-20, -20, -20), glm::vec3(20, 20, 20), glm::vec3(0), glm::vec3(0),
-               glm::vec3(0, -9.81f, 0), settings(o, method));
+               glm::vec3(0, -9.81f, 0), settings(o));
 }
 
 }  // namespace demo

@@ -5,7 +5,7 @@
 int main(int argc, char** argv) {
     const demo::Options options = demo::parse(argc, argv);
     return demo::run(options, [&](tide::Fluid& fluid) {
-        demo::initSeedTank(fluid, options, "dfsph");
+        demo::initSeedTank(fluid, options);
         const tide::MaterialIndex heavyOil = fluid.addMaterial(tide::Material(30.0f, 5000.0f, glm::vec3(0.5f, 0.5f, 1)));
         const tide::MaterialIndex lightOil = fluid.addMaterial(tide::Material(30.0f, 200.0f, glm::vec3(0.5f, 1, 0.5f)));
         const tide::MaterialIndex lightWater = fluid.addMaterial(tide::Material(1.0f, 200.0f, glm::vec3(1, 0.5f, 0.5f)));

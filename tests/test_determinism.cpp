@@ -43,6 +43,14 @@ TEST(Determinism, PcisphOneAndTwoThreadsAreBitIdentical) {
     EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(glm::vec3)), 0);
 }
 
+// Position based fluids: fixed Jacobi iterations, every sum per particle in list order.
+TEST(Determinism, PbfOneAndTwoThreadsAreBitIdentical) {
+    const auto one = runDamBreak(1, "pbf", 40);
+    const auto two = runDamBreak(2, "pbf", 40);
+    ASSERT_EQ(one.size(), two.size());
+    EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(glm::vec3)), 0);
+}
+
 /// CRC-32 of everything that evolves (the checkpoint's bytes: every particle array in
 /// store order, time, statistics, solver scalars), without the wall-clock phase timings.
 std::uint32_t stateHash(const World& world) {

@@ -15,13 +15,21 @@ namespace {
 
 using namespace tide;
 
-void initSeedBox(Fluid& fluid, std::uint32_t capacity = 65535) {
-    fluid.init(capacity, {-20, -20, -20}, {20, 20, 20}, {0, 0, 0}, {0, 0, 0}, {0, -9.81f, 0});
+void initSeedBox(Fluid& fluid, std::uint32_t capacity = 65535, const FluidSettings& settings = {}) {
+    fluid.init(capacity, {-20, -20, -20}, {20, 20, 20}, {0, 0, 0}, {0, 0, 0}, {0, -9.81f, 0}, settings);
 }
 
+FluidSettings seedSettings() {
+    FluidSettings settings;
+    settings.solver = FluidSettings::seedSolver();
+    return settings;
+}
+
+// The seed's solver, asked for by name (the default is the live preset, pbf).
 TEST(FluidApi, SeedFreeFallBlockRunsVerbatim) {
     Fluid fluid;
-    initSeedBox(fluid);
+    initSeedBox(fluid, 65535, seedSettings());
+    EXPECT_EQ(fluid.world().def().solver.method, "classic");
     ASSERT_TRUE(fluid.addPoint(glm::vec3(-15, -10, -15), glm::vec3(10, 20, 10), glm::vec3(0, 0, 0)));
     EXPECT_EQ(fluid.getPointCounts(), 25u * 30u * 25u);
     EXPECT_EQ(fluid.getPointStride(), sizeof(Point));
@@ -40,6 +48,24 @@ TEST(FluidApi, SeedFreeFallBlockRunsVerbatim) {
     for (unsigned i = 0; i < fluid.getPointCounts(); ++i) top = std::max(top, fluid.getPosData()[3 * i + 1]);
     const float drop = topBefore - top;
     EXPECT_NEAR(drop, 0.5f * 9.81f / 900.0f / 0.025f, 0.3f);
+}
+
+// The default, live preset (pbf, 2 substeps a frame): the same block falls like water too.
+TEST(FluidApi, LiveDefaultFreeFallBlock) {
+    Fluid fluid;
+    initSeedBox(fluid);
+    EXPECT_EQ(fluid.world().def().solver.method, "pbf");
+    ASSERT_TRUE(fluid.addPoint(glm::vec3(-15, -10, -15), glm::vec3(10, 20, 10), glm::vec3(0, 0, 0)));
+    float topBefore = -1e9f;
+    for (unsigned i = 0; i < fluid.getPointCounts(); ++i) topBefore = std::max(topBefore, fluid.getPosData()[3 * i + 1]);
+    fluid.step(1.0f / 30.0f);
+    EXPECT_NEAR(fluid.time(), 1.0 / 30.0, 1e-6);
+    EXPECT_EQ(fluid.world().stats().steps, 2u);
+    float top = -1e9f;
+    for (unsigned i = 0; i < fluid.getPointCounts(); ++i) top = std::max(top, fluid.getPosData()[3 * i + 1]);
+    // Implicit Euler over two substeps: g Δt² (1 + 2) for the top layer, ½ g t² × 1.5.
+    const float expected = 9.81f * (1.0f / 60.0f) * (1.0f / 60.0f) * 3.0f / 0.025f;
+    EXPECT_NEAR(topBefore - top, expected, 0.3f);
 }
 
 TEST(FluidApi, AddPointBeyondCapacityReturnsFalseAndChangesNothing) {
@@ -108,7 +134,7 @@ TEST(FluidApi, BadSettingsAreRejectedByName) {
 // particle, and what the facade hands out to draw holds no NaN or infinity.
 TEST(FluidApi, DivergenceThrowsAndTheDrawingBuffersStayFinite) {
     Fluid fluid;
-    FluidSettings settings;
+    FluidSettings settings = seedSettings();
     settings.threads = 1;
     settings.solver.minDt = 0.05f;
     settings.solver.maxDt = 0.05f;

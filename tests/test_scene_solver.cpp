@@ -50,3 +50,29 @@ TEST(SceneSolver, DifferenceFormIsOffUnlessTheSceneSetsIt) {
 }
 
 }  // namespace
+
+namespace {
+
+std::string parseError(const std::string& solver) {
+    try {
+        parseWithSolver(solver);
+    } catch (const std::exception& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(SceneSolver, PbfTakesItsIterationsAndRefusesThemOutOfRangeByName) {
+    const io::Scene pbf = parseWithSolver(R"({"method": "pbf", "constraint_iterations": 6, "vorticity": 0.1})");
+    EXPECT_EQ(pbf.world.solver.method, "pbf");
+    EXPECT_EQ(pbf.world.solver.constraintIterations, 6);
+    EXPECT_EQ(pbf.world.solver.vorticity, 0.1f);
+    EXPECT_EQ(parseWithSolver(R"({"method": "pbf"})").world.solver.constraintIterations, 4);
+    for (const char* bad : {"0", "101", "2.5"}) {
+        const std::string message = parseError(std::string(R"({"method": "pbf", "constraint_iterations": )") + bad + "}");
+        EXPECT_NE(message.find("solver.constraint_iterations"), std::string::npos) << bad << ": " << message;
+    }
+    EXPECT_NE(parseError(R"({"method": "pbf", "vorticity": -1})").find("solver.vorticity"), std::string::npos);
+}
+
+}  // namespace

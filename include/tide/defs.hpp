@@ -82,7 +82,8 @@ inline constexpr float kWendlandSupportRatio = 3.0f;
 
 /// How the pressure/viscosity solver runs and how its time step is chosen.
 struct SolverDef {
-    /// Solver name, see tide::solverNames(): dfsph, pcisph, wcsph, classic (the seed's Müller 2003).
+    /// Solver name, see tide::solverNames(): dfsph, pcisph, wcsph, classic (the seed's Müller 2003),
+    /// pbf (position based fluids, Macklin & Müller 2013: for interactive use, docs/live.md).
     std::string method = "dfsph";
     KernelShape kernel = KernelShape::CubicSpline;  ///< scene key solver.kernel
     EquationOfState equationOfState = EquationOfState::Linear;
@@ -154,6 +155,12 @@ struct SolverDef {
     float forceNumber = 0.25f;              ///< dt ≤ forceNumber · √(h / |a|max)
     float minDt = 1e-6f;                    ///< s; a step never goes below this
     float maxDt = 5e-3f;                    ///< s
+    /// pbf: Jacobi iterations of the density constraints per step, in [1, 100]. A step costs
+    /// about this many pairs of passes over the neighbour lists; more keep deep water denser.
+    int constraintIterations = 4;
+    /// pbf: vorticity confinement ε (Macklin & Müller 2013, eq. 16), m/s, in [0, 10]: restores
+    /// swirl the position corrections and XSPH damp; 0 (the default) switches it off.
+    float vorticity = 0.0f;
 };
 
 /// What a World is: its container, gravity, resolution and solver.

@@ -40,8 +40,12 @@ void bindFluid(py::module_& m) {
         .def_readwrite("waterViscosity", &FluidSettings::waterViscosity)
         .def_readwrite("threads", &FluidSettings::threads)
         .def_property("solver", [](const FluidSettings& s) { return s.solver.method; },
-                      [](FluidSettings& s, const std::string& method) { s.solver.method = method; },
-                      "The solver's name: classic (the seed's, default), wcsph, pcisph, dfsph.");
+                      [](FluidSettings& s, const std::string& method) { s.solver = FluidSettings::solverNamed(method); },
+                      "The solver's name: pbf (live, default), classic (the seed's), wcsph, pcisph, dfsph.")
+        .def_readwrite("substeps", &FluidSettings::substeps, "pbf: steps per step() call, in [1, 100].")
+        .def_property("constraintIterations", [](const FluidSettings& s) { return s.solver.constraintIterations; },
+                      [](FluidSettings& s, int n) { s.solver.constraintIterations = n; },
+                      "pbf: constraint iterations per step, in [1, 100].");
 
     py::class_<PyFluid>(m, "Fluid", "The seed's Fluid API over a World (include/tide/fluid.hpp).")
         .def(py::init<>())

@@ -53,7 +53,7 @@ def test_the_seed_api_reproduces_the_cpp_demos_summary_exactly(bin_dir):
     demo = bin_dir / "jets"
     if not demo.exists():
         pytest.skip("examples not built (TIDE_BUILD_EXAMPLES=OFF)")
-    out = subprocess.run([str(demo), "--four", "--seconds", str(SECONDS), "--every", str(EVERY)], check=True,
+    out = subprocess.run([str(demo), "--four", "--solver", "classic", "--seconds", str(SECONDS), "--every", str(EVERY)], check=True,
                          capture_output=True, text=True).stdout
     expected = [line for line in out.splitlines() if line.startswith("t=")]
     assert len(expected) == 3

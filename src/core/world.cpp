@@ -88,6 +88,10 @@ void validateWorldDef(const WorldDef& d) {
     if (s.minIterations < 0 || s.maxIterations < std::max(1, s.minIterations))
         throw std::invalid_argument("solver.maxIterations: must be >= max(1, minIterations), got " +
                                     std::to_string(s.maxIterations));
+    if (s.constraintIterations < 1 || s.constraintIterations > 100)
+        throw std::invalid_argument("solver.constraintIterations: must be in [1, 100], got " +
+                                    std::to_string(s.constraintIterations));
+    requireInRange("solver.vorticity", s.vorticity, 0.0f, 10.0f);
     requireInRange("solver.cflNumber", s.cflNumber, 1e-4f, 1.0f);
     requireInRange("solver.forceNumber", s.forceNumber, 1e-4f, 1.0f);
     requirePositive("solver.minDt", s.minDt);

@@ -24,6 +24,8 @@ MaterialDef toMaterialDef(const Material& m, float waterViscosity, std::string n
 float finite(float v) { return std::isfinite(v) ? v : 0.0f; }
 glm::vec3 finite(const glm::vec3& v) { return {finite(v.x), finite(v.y), finite(v.z)}; }
 
+constexpr int kMaxSubsteps = 100;
+
 bool hasVolume(const glm::vec3& min, const glm::vec3& max) {
     return max.x > min.x && max.y > min.y && max.z > min.z;
 }
@@ -37,6 +39,9 @@ void Fluid::init(std::uint32_t maxPointCounts, const glm::vec3& wallBox_min, con
                  const FluidSettings& settings) {
     requirePositive("FluidSettings.metresPerUnit", settings.metresPerUnit);
     requirePositive("FluidSettings.particleSpacing", settings.particleSpacing);
+    if (settings.substeps < 1 || settings.substeps > kMaxSubsteps)
+        throw std::invalid_argument("FluidSettings.substeps: must be in [1, " + std::to_string(kMaxSubsteps) + "], got " +
+                                    std::to_string(settings.substeps));
     if (!(settings.waterViscosity >= 0.0f) || !std::isfinite(settings.waterViscosity))
         throw std::invalid_argument("FluidSettings.waterViscosity: must be >= 0 Pa·s, got " +
                                     show(settings.waterViscosity));
@@ -121,8 +126,20 @@ void Fluid::step(float frameTime) {
     if (!world_) return;
     if (!(frameTime >= 0.0f) || !std::isfinite(frameTime))
         throw std::invalid_argument("Fluid::step frameTime: must be finite and >= 0, got " + show(frameTime));
+    const bool fixedSteps = settings_.solver.method == "pbf";
+    const double substep = static_cast<double>(frameTime) / settings_.substeps;
+    if (fixedSteps && substep > settings_.solver.maxDt)
+        throw std::invalid_argument("Fluid::step frameTime: " + show(frameTime) + " s in " +
+                                    std::to_string(settings_.substeps) + " substeps exceeds solver.maxDt (" +
+                                    show(settings_.solver.maxDt) + " s) a substep; raise FluidSettings.substeps");
     try {
-        world_->advance(frameTime);
+        // pbf: one step each (its step is the time asked for, up to maxDt), so a frame costs
+        // the same however the fluid moves; if the machine is slower than real time, the
+        // simulated time slows down instead of the frames piling up.
+        if (fixedSteps && frameTime > 0.0f)
+            for (int k = 0; k < settings_.substeps; ++k) world_->advance(substep);
+        else
+            world_->advance(frameTime);
     } catch (const DivergenceError&) {
         // The caches still hold the last frame the caller read, if it read one.
         for (const TickEmitter& e : tickEmitters_) world_->setEmitterActive(e.id, false);

@@ -209,7 +209,7 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     if (!r.object(j, path, {"method", "kernel", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "viscosity",
                             "xsph", "momentum", "shifting", "difference_form", "clamp_negative_pressure", "support_ratio", "max_density_error",
                             "max_divergence_error", "min_iterations", "min_divergence_iterations", "divergence_warm_start",
-                            "max_iterations"}))
+                            "max_iterations", "constraint_iterations", "vorticity"}))
         return;
     SolverDef& s = scene.world.solver;
     if (auto method = r.string(j, "method", path, false)) {
@@ -275,6 +275,11 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     }
     if (auto v = r.number(j, "max_iterations", path, false, 1.0, 10000.0)) s.maxIterations = static_cast<int>(*v);
     if (s.maxIterations < s.minIterations) r.fail(join(path, "max_iterations"), "must not be below min_iterations");
+    if (auto v = r.number(j, "constraint_iterations", path, false, 1.0, 100.0)) {
+        if (*v != std::floor(*v)) r.fail(join(path, "constraint_iterations"), "must be a whole number, got " + std::to_string(*v));
+        s.constraintIterations = static_cast<int>(*v);
+    }
+    if (auto v = r.number(j, "vorticity", path, false, 0.0, 10.0)) s.vorticity = static_cast<float>(*v);
     if (auto v = r.number(j, "support_ratio", path, false, 1.0, 4.0)) scene.world.supportRatio = static_cast<float>(*v);
     // Wendland C2 wants a wider support than the cubic spline (at 2 spacings a standing wave
     // runs 15 % fast, at 3 within 0.5 %): 3 spacings unless the scene says otherwise.

@@ -4,6 +4,7 @@
 
 #include "solvers/classic_muller2003.hpp"
 #include "solvers/dfsph_bender2017.hpp"
+#include "solvers/pbf_macklin2013.hpp"
 #include "solvers/pcisph_solenthaler2009.hpp"
 #include "solvers/wcsph_becker2007.hpp"
 #include "solvers/solver.hpp"
@@ -20,6 +21,7 @@ constexpr Entry kSolvers[] = {
     {"wcsph", []() -> std::unique_ptr<Solver> { return std::make_unique<WcsphBecker2007>(); }},
     {"pcisph", []() -> std::unique_ptr<Solver> { return std::make_unique<PcisphSolenthaler2009>(); }},
     {"dfsph", []() -> std::unique_ptr<Solver> { return std::make_unique<DfsphBender2017>(); }},
+    {"pbf", []() -> std::unique_ptr<Solver> { return std::make_unique<PbfMacklin2013>(); }},
 };
 }  // namespace
 

@@ -104,6 +104,7 @@ void SimulationRunner::work() {
     auto lastPublish = last;
     auto rateStart = last;
     std::uint64_t particleSteps = 0, steps = 0;
+    double simulated = 0.0;  // simulated seconds since rateStart
     for (;;) {
         std::vector<Command> commands;
         {
@@ -122,7 +123,9 @@ void SimulationRunner::work() {
             if (pendingSteps_ > 0 || (playing_ && budget > 0.0)) {
                 // One advance may be many solver steps (a Fluid frame): count the World's.
                 const std::uint64_t before = source_->world().stats().steps;
-                budget -= source_->advance();
+                const double advanced = source_->advance();
+                budget -= advanced;
+                simulated += advanced;
                 const std::uint64_t taken = source_->world().stats().steps - before;
                 particleSteps += taken * source_->world().particles().size();
                 steps += taken;
@@ -140,7 +143,9 @@ void SimulationRunner::work() {
         if (seconds(now - rateStart) >= 1.0) {
             workerStatus_.particleStepsPerSecond = static_cast<double>(particleSteps) / seconds(now - rateStart);
             workerStatus_.stepsPerSecond = static_cast<double>(steps) / seconds(now - rateStart);
+            workerStatus_.simulatedPerWallSecond = simulated / seconds(now - rateStart);
             particleSteps = steps = 0;
+            simulated = 0.0;
             rateStart = now;
         }
         // Publish at most at screen rate, and at once after a command, so that a click shows.

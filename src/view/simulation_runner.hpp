@@ -38,6 +38,7 @@ struct RunnerStatus {
     double speed = 1.0;
     double particleStepsPerSecond = 0.0;
     double stepsPerSecond = 0.0;
+    double simulatedPerWallSecond = 0.0;  ///< simulated seconds per wall second (1 = real time)
     std::string error;       ///< the step that threw, if one did (the worker then pauses)
 };
 

@@ -111,6 +111,7 @@ void drawPanel(const render::Snapshot& snapshot, const RunnerStatus& status, Pan
     ImGui::Text("density error  %.3f %%", 100.0 * static_cast<double>(s.meanDensityError));
     ImGui::Text("particle-steps %.2f M/s", status.particleStepsPerSecond / 1e6);
     ImGui::Text("steps          %.0f /s", status.stepsPerSecond);
+    ImGui::Text("sim s / wall s %.2f", status.simulatedPerWallSecond);
 
     section("mouse");
     ImGui::TextWrapped("left drag: orbit   middle or shift+left: pan   wheel: zoom   right drag: push the fluid   "

@@ -13,10 +13,9 @@ int main(int argc, char** argv) {
     const std::string out = argc > 1 ? argv[1] : "oil_and_water.csv";
     const float seconds = argc > 2 ? std::stof(argv[2]) : 2.0f;
 
-    // Several rest densities need an incompressible solver: the default "classic" is the
-    // seed's Müller 2003 solver for one fluid.
+    // dfsph for accuracy; the default, pbf, is for live use (docs/live.md).
     tide::FluidSettings settings;
-    settings.solver.method = "dfsph";
+    settings.solver = tide::FluidSettings::solverNamed("dfsph");
 
     // World units: 1 unit = 0.025 m (settings.metresPerUnit), so the tank is 1 m wide.
     tide::Fluid fluid;
