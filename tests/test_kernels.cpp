@@ -44,6 +44,39 @@ TEST_P(KernelNormalisation, EachKernelIntegratesToOne) {
 
 INSTANTIATE_TEST_SUITE_P(SupportRadii, KernelNormalisation, ::testing::Values(0.04f, 1.0f, 2.5f));
 
+/// ∫ f dA = ∫_0^h 2π r f(r) dr (2D) or ∫_0^h 4π r² f(r) dr (3D), composite Simpson in double.
+double integrateRadially(const std::function<double(double)>& f, double h, int dimensions, int intervals = 200000) {
+    const double dr = h / intervals;
+    double sum = 0.0;
+    for (int k = 0; k <= intervals; ++k) {
+        const double r = k * dr;
+        const double shell = dimensions == 2 ? 2.0 * pi * r : 4.0 * pi * r * r;
+        sum += (k == 0 || k == intervals ? 1.0 : (k % 2 ? 4.0 : 2.0)) * shell * f(r);
+    }
+    return sum * dr / 3.0;
+}
+
+// The 2D normalisations (∫ W dA = 1: cubic spline 40/(7π h²), Wendland C2 7/(π h²), Poly6
+// 4/(π h⁸), Spiky 10/(π h⁵), Müller's viscosity kernel 10/(3π h²)) and the 3D ones, to 1e-4.
+TEST_P(KernelNormalisation, EachKernelIntegratesToOneIn2DAnd3D) {
+    const float h = GetParam();
+    for (const int d : {2, 3}) {
+        const auto area = [&](auto kernel) {
+            return integrateRadially([&](double r) { return double{kernel.value(static_cast<float>(r))}; }, h, d);
+        };
+        EXPECT_NEAR(area(SmoothingKernel(h, KernelShape::CubicSpline, d)), 1.0, 1e-4) << "cubic spline, d = " << d;
+        EXPECT_NEAR(area(SmoothingKernel(h, KernelShape::WendlandC2, d)), 1.0, 1e-4) << "Wendland C2, d = " << d;
+        EXPECT_NEAR(area(Poly6(h, d)), 1.0, 1e-4) << "poly6, d = " << d;
+        EXPECT_NEAR(area(Spiky(h, d)), 1.0, 1e-4) << "spiky, d = " << d;
+        EXPECT_NEAR(area(Viscosity(h, d)), 1.0, 2e-3) << "viscosity, d = " << d;  // 1/r at 0: Simpson converges slowly
+        // Müller's viscosity Laplacian: second moment ∫ r² ∇²W = 2d (so Σ V_j (v_j − v_i) ∇²W ≈ ∇²v).
+        const Viscosity v(h, d);
+        EXPECT_NEAR(integrateRadially([&](double r) { return r * r * v.laplacian(static_cast<float>(r)); }, h, d), 2.0 * d,
+                    1e-3)
+            << "viscosity Laplacian moment, d = " << d;
+    }
+}
+
 /// Checks gradient and Laplacian of a kernel against central differences of its value.
 template <class K>
 void expectDerivativesMatchFiniteDifferences(const K& kernel, float h) {
@@ -80,6 +113,28 @@ TEST(KernelDerivatives, MatchFiniteDifferences) {
         expectDerivativesMatchFiniteDifferences(Viscosity(h), h);
         expectDerivativesMatchFiniteDifferences(cubicSpline(h), h);
         expectDerivativesMatchFiniteDifferences(wendland(h), h);
+    }
+}
+
+/// In 2D: the Laplacian against W'' + W'/r by central differences of the value.
+template <class K>
+void expectPlanarLaplacianMatchesFiniteDifferences(const K& kernel, float h) {
+    float lapScale = 0.0f;
+    for (float q : {0.2f, 0.35f, 0.5f, 0.7f, 0.9f}) lapScale = std::max(lapScale, std::abs(kernel.laplacian(q * h)));
+    for (float q : {0.2f, 0.35f, 0.5f, 0.7f, 0.9f}) {
+        const float r = q * h, e2 = 5e-3f * h;
+        const float plus = kernel.value(r + e2), mid = kernel.value(r), minus = kernel.value(r - e2);
+        const float lap = (plus - 2.0f * mid + minus) / (e2 * e2) + (plus - minus) / (2.0f * e2) / r;
+        EXPECT_NEAR(kernel.laplacian(r), lap, 2e-2f * std::abs(lap) + 2e-3f * lapScale) << "q=" << q;
+    }
+}
+
+TEST(KernelDerivatives, PlanarLaplaciansMatchFiniteDifferences) {
+    for (float h : {1.0f, 0.05f}) {
+        expectPlanarLaplacianMatchesFiniteDifferences(Poly6(h, 2), h);
+        expectPlanarLaplacianMatchesFiniteDifferences(Spiky(h, 2), h);
+        expectPlanarLaplacianMatchesFiniteDifferences(SmoothingKernel(h, KernelShape::CubicSpline, 2), h);
+        expectPlanarLaplacianMatchesFiniteDifferences(SmoothingKernel(h, KernelShape::WendlandC2, 2), h);
     }
 }
 

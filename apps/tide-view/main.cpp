@@ -48,6 +48,8 @@ int main(int argc, char** argv) {
     scene.world.threads = threads;
     options.title = "tide-view: " + (scene.name.empty() ? sceneFile : scene.name);
     options.render.mode = mode == "particles" ? tide::render::RenderMode::Particles : tide::render::RenderMode::Surface;
+    // One layer in the plane has no depth for the water surface: a 2D scene shows its particles.
+    if (scene.world.dimensions == 2) options.render.mode = tide::render::RenderMode::Particles;
     options.render.colorBy = colorBy == "speed"      ? tide::render::ColorBy::Speed
                              : colorBy == "density"  ? tide::render::ColorBy::Density
                              : colorBy == "pressure" ? tide::render::ColorBy::Pressure

@@ -35,6 +35,7 @@ void Measurements::sample(World& world, double t) {
                     if (kind == SolidInfo::Kind::Wall) {
                         const int axis = static_cast<int>(solids[s].index / 2);
                         if (!world.def().walls || world.def().periodic[axis]) continue;
+                        if (axis == 2 && world.def().dimensions == 2) continue;  // a 2D world has no z faces
                     }
                     solids_.push_back(s);
                     solidNames_.push_back(solids[s].name);

@@ -110,6 +110,12 @@ int renderCommand(const RenderOptions& o) {
 
     render::RenderSettings settings;
     settings.mode = o.mode == "particles" ? render::RenderMode::Particles : render::RenderMode::Surface;
+    // The water surface is built from the particles' depth and thickness, which one layer in
+    // the plane does not have (it drew nothing): a 2D scene is drawn as particles.
+    if (scene.world.dimensions == 2 && settings.mode == render::RenderMode::Surface) {
+        std::printf("2D scene: drawn as particles (the surface mode needs a fluid's depth)\n");
+        settings.mode = render::RenderMode::Particles;
+    }
     settings.colorBy = o.colorBy == "speed"      ? render::ColorBy::Speed
                        : o.colorBy == "density"  ? render::ColorBy::Density
                        : o.colorBy == "pressure" ? render::ColorBy::Pressure

@@ -153,6 +153,8 @@ int validateCommand(const std::string& file) {
             case ObstacleDef::Shape::Sphere: shapes += "sphere"; break;
             case ObstacleDef::Shape::Cylinder: shapes += "cylinder"; break;
             case ObstacleDef::Shape::Plane: shapes += "plane"; break;
+            case ObstacleDef::Shape::Circle: shapes += "circle"; break;
+            case ObstacleDef::Shape::Polygon: shapes += "polygon of " + std::to_string(o.polygon.size()) + " points"; break;
             case ObstacleDef::Shape::Mesh:
                 shapes += "mesh of " + std::to_string(o.mesh->triangles().size()) + " triangles";
                 break;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 namespace tide {
@@ -165,6 +166,12 @@ struct SolverDef {
 
 /// What a World is: its container, gravity, resolution and solver.
 struct WorldDef {
+    /// 3, or 2 for a vertical slice in the x–y plane: particles at z = 0, kernels normalised
+    /// per area, masses per metre of width (ρ s²), walls on the domain's x and y faces only.
+    /// In 2D the domain's, gravity's and every added shape's z is 0 (the World sets the
+    /// domain's, refuses non-zero z in vectors), and obstacles are boxes, planes, circles and
+    /// polygons (spheres, cylinders and meshes are 3D only; circles and polygons 2D only).
+    int dimensions = 3;
     glm::vec3 domainMin{0.0f, 0.0f, 0.0f};  ///< container corner, m
     glm::vec3 domainMax{1.0f, 1.0f, 1.0f};  ///< container corner, m
     /// Keep particles inside the domain box: walls of boundary particles on the lattice blocks
@@ -250,6 +257,8 @@ struct ObstacleDef {
         Cylinder,  ///< capped: `center`, `axis`, `radius`, `length` (cap to cap)
         Plane,     ///< the half-space behind `point` + `normal`: the fluid is on the normal's side
         Mesh,      ///< a closed triangle mesh, `mesh`
+        Circle,    ///< 2D worlds only: `center` (z = 0), `radius`
+        Polygon,   ///< 2D worlds only: the simple polygon `polygon` (x, y), either winding
     };
     Shape shape = Shape::Box;
     glm::vec3 min{0.0f};                 ///< box corner, m
@@ -261,6 +270,7 @@ struct ObstacleDef {
     glm::vec3 point{0.0f};               ///< a point on the plane, m
     glm::vec3 normal{0.0f, 1.0f, 0.0f};  ///< plane normal, pointing out of the solid (normalised when added)
     std::shared_ptr<const TriangleMesh> mesh;  ///< the mesh (shared, immutable), in metres
+    std::vector<glm::vec2> polygon;      ///< polygon corners in order, m (≥ 3, no self-crossing)
     /// How it moves (not a plane); the fields above describe its rest pose.
     MotionDef motion;
     /// What its loads are called (World::solids, forces.csv columns); empty: "obstacle<k>",

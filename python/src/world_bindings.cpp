@@ -109,6 +109,13 @@ public:
                 msg << "velocities[" << k / 3 << ", " << k % 3 << "]: must be finite, got " << x[k];
                 throw py::value_error(msg.str());
             }
+        if (world_->def().dimensions == 2)  // a 2D world's particles stay in the plane z = 0
+            for (std::size_t i = 0; i < std::size_t{n}; ++i)
+                if (x[3 * i + 2] != 0.0f) {
+                    std::ostringstream msg;
+                    msg << "velocities[" << i << ", 2]: must be 0 in a 2D world, got " << x[3 * i + 2];
+                    throw py::value_error(msg.str());
+                }
         std::memcpy(world_->velocities().data(), x, sizeof(float) * 3 * n);
     }
 

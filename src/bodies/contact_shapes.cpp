@@ -91,6 +91,8 @@ ContactShape makeContactShape(const ObstacleDef& shape) {
             out.center = glm::dvec3(shape.point);
             out.boundingRadius = std::numeric_limits<double>::infinity();
             return out;
+        case ObstacleDef::Shape::Circle:
+        case ObstacleDef::Shape::Polygon: break;  // 2D worlds have no bodies
     }
     for (const auto& p : out.probes)
         out.boundingRadius = std::max(out.boundingRadius, glm::length(p.point - out.center) + p.radius);
@@ -153,6 +155,8 @@ double signedDistance(const ObstacleDef& shape, const glm::dvec3& p, glm::dvec3&
             normal = glm::normalize(glm::dvec3(shape.normal));
             return glm::dot(p - glm::dvec3(shape.point), normal);
         }
+        case ObstacleDef::Shape::Circle:
+        case ObstacleDef::Shape::Polygon: break;  // 2D worlds have no bodies
     }
     normal = glm::dvec3(0.0, 1.0, 0.0);
     return std::numeric_limits<double>::infinity();

@@ -193,6 +193,9 @@ MassProperties obstacleMassProperties(const ObstacleDef& shape, double density, 
                 return meshMassProperties(*shape.mesh, density);
             case ObstacleDef::Shape::Plane:
                 throw std::invalid_argument("shape: a plane has no mass (use a box, sphere, cylinder or mesh)");
+            case ObstacleDef::Shape::Circle:
+            case ObstacleDef::Shape::Polygon:
+                throw std::invalid_argument("shape: floating bodies are 3D only (a circle or polygon cannot be one)");
         }
     } catch (const std::invalid_argument& e) {
         throw std::invalid_argument(path + "." + e.what());

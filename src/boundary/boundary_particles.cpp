@@ -37,9 +37,10 @@ std::vector<float> axisCoordinates(float lo, float hi, float spacing, int layers
 }  // namespace
 
 void BoundaryParticles::sampleBoxShell(const glm::vec3& min, const glm::vec3& max, float spacing, int layers,
-                                       float particleVolume, float searchRadius, int threads, unsigned openFaces) {
+                                       float particleVolume, float searchRadius, int threads, unsigned openFaces,
+                                       int dimensions) {
     std::vector<bool> inX, inY, inZ;
-    const auto layersAlong = [&](int axis) { return periodic.periodic(axis) ? 0 : layers; };
+    const auto layersAlong = [&](int axis) { return periodic.periodic(axis) || (axis == 2 && dimensions == 2) ? 0 : layers; };
     const auto xs = axisCoordinates(min.x, max.x, spacing, layersAlong(0), inX);
     const auto ys = axisCoordinates(min.y, max.y, spacing, layersAlong(1), inY);
     const auto zs = axisCoordinates(min.z, max.z, spacing, layersAlong(2), inZ);

@@ -31,11 +31,12 @@ namespace tide {
 class BoundaryParticles {
 public:
     /// Sample the walls of the box [min, max] with a shell `layers` deep at `spacing`;
-    /// every particle gets `volume` (m³). No walls across the axes that `periodic` wraps.
+    /// every particle gets `volume` (m³). No walls across the axes that `periodic` wraps,
+    /// nor across z in 2D (`dimensions` 2: the x and y faces as lines of particles in z = min.z).
     /// Faces in `openFaces` (bit 2·axis + 1 on the max side, as the wall solids count them) get
     /// no particles, nor does anything of the shell beyond them (an ocean's open sides).
     void sampleBoxShell(const glm::vec3& min, const glm::vec3& max, float spacing, int layers, float volume,
-                        float searchRadius, int threads, unsigned openFaces = 0);
+                        float searchRadius, int threads, unsigned openFaces = 0, int dimensions = 3);
 
     /// Add more boundary particles (an obstacle), each of `volume` m³, and rebuild the grid.
     /// Points closer than `minSeparation` to an existing boundary particle are left out:

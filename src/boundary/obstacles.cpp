@@ -66,6 +66,34 @@ float cylinderSignedDistance(const ObstacleDef& o, const glm::vec3& x, glm::vec3
     return d;
 }
 
+/// Signed distance in the x–y plane to a simple polygon (either winding): the nearest edge's
+/// distance, negative inside by the crossing-number test; the gradient points away from it.
+float polygonSignedDistance(const std::vector<glm::vec2>& polygon, const glm::vec3& x, glm::vec3* normal) {
+    const glm::vec2 p(x.x, x.y);
+    float best2 = std::numeric_limits<float>::infinity();
+    glm::vec2 nearest(0.0f);
+    bool inside = false;
+    const std::size_t n = polygon.size();
+    for (std::size_t i = 0, k = n - 1; i < n; k = i++) {
+        const glm::vec2 a = polygon[k], b = polygon[i];
+        const glm::vec2 e = b - a;
+        const float t = glm::clamp(glm::dot(p - a, e) / glm::dot(e, e), 0.0f, 1.0f);
+        const glm::vec2 q = a + t * e;
+        const float d2 = glm::dot(p - q, p - q);
+        if (d2 < best2) {
+            best2 = d2;
+            nearest = q;
+        }
+        if ((a.y > p.y) != (b.y > p.y) && p.x < a.x + (p.y - a.y) / (b.y - a.y) * e.x) inside = !inside;
+    }
+    const float d = std::sqrt(best2);
+    if (normal) {
+        const glm::vec2 away = d > 0.0f ? (p - nearest) / d : glm::vec2(0.0f, 1.0f);
+        *normal = glm::vec3(inside ? -away : away, 0.0f);
+    }
+    return inside ? -d : d;
+}
+
 /// Whether x is more than `distance` outside the box [lo, hi].
 bool fartherThan(const glm::vec3& x, const glm::vec3& lo, const glm::vec3& hi, float distance) {
     const glm::vec3 d = glm::max(glm::max(lo - x, x - hi), glm::vec3(0.0f));
@@ -88,6 +116,13 @@ float signedDistance(const ObstacleDef& o, const glm::vec3& x, glm::vec3* normal
             if (normal) *normal = o.normal;
             return glm::dot(x - o.point, o.normal);
         case ObstacleDef::Shape::Mesh: return o.mesh->signedDistance(x, normal);
+        case ObstacleDef::Shape::Circle: {
+            const glm::vec3 d(x.x - o.center.x, x.y - o.center.y, 0.0f);
+            const float r = glm::length(d);
+            if (normal) *normal = r > 0.0f ? d / r : glm::vec3(0, 1, 0);
+            return r - o.radius;
+        }
+        case ObstacleDef::Shape::Polygon: return polygonSignedDistance(o.polygon, x, normal);
     }
     return std::numeric_limits<float>::infinity();
 }
@@ -102,7 +137,22 @@ glm::vec3 shapeCentre(const ObstacleDef& obstacle) {
     switch (obstacle.shape) {
         case ObstacleDef::Shape::Box: return 0.5f * (obstacle.min + obstacle.max);
         case ObstacleDef::Shape::Sphere:
+        case ObstacleDef::Shape::Circle:
         case ObstacleDef::Shape::Cylinder: return obstacle.center;
+        case ObstacleDef::Shape::Polygon: {
+            // The area centroid of the polygon.
+            double area = 0.0, cx = 0.0, cy = 0.0;
+            const std::size_t n = obstacle.polygon.size();
+            for (std::size_t i = 0; i < n; ++i) {
+                const glm::vec2 a = obstacle.polygon[i], b = obstacle.polygon[(i + 1) % n];
+                const double c = double{a.x} * b.y - double{b.x} * a.y;
+                area += c;
+                cx += (double{a.x} + b.x) * c;
+                cy += (double{a.y} + b.y) * c;
+            }
+            return area != 0.0 ? glm::vec3(static_cast<float>(cx / (3.0 * area)), static_cast<float>(cy / (3.0 * area)), 0.0f)
+                               : glm::vec3(0.0f);
+        }
         case ObstacleDef::Shape::Plane: return obstacle.point;
         case ObstacleDef::Shape::Mesh:
             return obstacle.mesh ? 0.5f * (obstacle.mesh->boundsMin() + obstacle.mesh->boundsMax()) : glm::vec3(0.0f);
@@ -118,8 +168,17 @@ void obstacleBounds(const ObstacleDef& o, const glm::vec3& clipMin, const glm::v
             hi = o.max;
             break;
         case ObstacleDef::Shape::Sphere:
+        case ObstacleDef::Shape::Circle:
             lo = o.center - glm::vec3(o.radius);
             hi = o.center + glm::vec3(o.radius);
+            break;
+        case ObstacleDef::Shape::Polygon:
+            lo = glm::vec3(std::numeric_limits<float>::infinity());
+            hi = -lo;
+            for (const glm::vec2& c : o.polygon) {
+                lo = glm::min(lo, glm::vec3(c, 0.0f));
+                hi = glm::max(hi, glm::vec3(c, 0.0f));
+            }
             break;
         case ObstacleDef::Shape::Cylinder: {
             // Per axis: half the length times the axis component, plus the cap disc's reach.

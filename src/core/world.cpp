@@ -26,6 +26,7 @@
 #include "core/material_pairs.hpp"
 #include "core/parallel.hpp"
 #include "core/periodic_box.hpp"
+#include "core/planar.hpp"
 #include "core/scratch_resize.hpp"
 #include "core/validate.hpp"
 #include "loads/contact_impulses.hpp"
@@ -45,10 +46,11 @@ namespace tide {
 namespace {
 
 void validateWorldDef(const WorldDef& d) {
+    validateDimensions(d);
     for (int axis = 0; axis < 3; ++axis) {
         requireFinite("domain.min", d.domainMin[axis]);
         requireFinite("domain.max", d.domainMax[axis]);
-        if (!(d.domainMax[axis] > d.domainMin[axis]))
+        if (!(d.domainMax[axis] > d.domainMin[axis]) && !(axis == 2 && d.dimensions == 2))
             throw std::invalid_argument("domain: max must exceed min on every axis, got min " + show(d.domainMin) +
                                         " max " + show(d.domainMax));
         requireFinite("gravity", d.gravity[axis]);
@@ -109,14 +111,16 @@ void validateMaterial(const MaterialDef& m) {
         throw std::invalid_argument("material.adhesion: must be >= 0, got " + show(m.adhesion));
 }
 
-/// Σ_k W(|k|·s) over the cubic lattice, W the solver's density kernel: a lattice particle of
-/// mass ρ0 / this sum has exactly the rest density inside a filled block, so blocks start at rest.
-float latticeKernelSum(DensityKernel kernel, KernelShape shape, float spacing, float h) {
-    const kernels::Poly6 poly6(h);
-    const kernels::SmoothingKernel smoothing(h, shape);
+/// Σ_k W(|k|·s) over the cubic lattice (the square one in 2D), W the solver's density kernel:
+/// a lattice particle of mass ρ0 / this sum has exactly the rest density inside a filled
+/// block, so blocks start at rest. (About ρ0 s³, in 2D ρ0 s² per metre of width.)
+float latticeKernelSum(DensityKernel kernel, KernelShape shape, float spacing, float h, int dimensions) {
+    const kernels::Poly6 poly6(h, dimensions);
+    const kernels::SmoothingKernel smoothing(h, shape, dimensions);
     const int reach = static_cast<int>(std::ceil(h / spacing));
+    const int reachZ = dimensions == 2 ? 0 : reach;
     double sum = 0.0;
-    for (int z = -reach; z <= reach; ++z)
+    for (int z = -reachZ; z <= reachZ; ++z)
         for (int y = -reach; y <= reach; ++y)
             for (int x = -reach; x <= reach; ++x) {
                 const glm::vec3 r = spacing * glm::vec3(static_cast<float>(x), static_cast<float>(y), static_cast<float>(z));
@@ -132,7 +136,9 @@ struct World::Impl {
     int threads;
     float h;
     /// The smoothing kernel of the solver's sums, which the gauges, probes and dye diffusion read too.
-    [[nodiscard]] kernels::SmoothingKernel kernel() const { return kernels::SmoothingKernel(h, def.solver.kernel); }
+    [[nodiscard]] kernels::SmoothingKernel kernel() const {
+        return kernels::SmoothingKernel(h, def.solver.kernel, def.dimensions);
+    }
     std::unique_ptr<Solver> solver;
     float latticeSum;
     PeriodicBox periodic;
@@ -205,8 +211,9 @@ struct World::Impl {
     [[nodiscard]] std::pair<glm::dvec3, glm::dvec3> wallLimits(double inf) const {
         glm::dvec3 lo = def.domainMin, hi = def.domainMax;
         for (int axis = 0; axis < 3; ++axis) {
-            if (periodic.periodic(axis) || (openFaces >> (2 * axis) & 1u)) lo[axis] = -inf;
-            if (periodic.periodic(axis) || (openFaces >> (2 * axis + 1) & 1u)) hi[axis] = inf;
+            const bool across = periodic.periodic(axis) || (axis == 2 && def.dimensions == 2);  // nor across the 2D plane
+            if (across || (openFaces >> (2 * axis) & 1u)) lo[axis] = -inf;
+            if (across || (openFaces >> (2 * axis + 1) & 1u)) hi[axis] = inf;
         }
         return {lo, hi};
     }
@@ -246,12 +253,14 @@ struct World::Impl {
     std::optional<Divergence> divergence;  ///< set by the step that diverged
 
     explicit Impl(const WorldDef& d)
-        : def(d), threads(resolveThreadCount(d.threads)), h(d.particleSpacing * d.supportRatio),
+        : def(planarWorldDef(d)), threads(resolveThreadCount(d.threads)), h(d.particleSpacing * d.supportRatio),
           solver(makeSolver(d.solver.method)),
-          latticeSum(latticeKernelSum(solver->densityKernel(), d.solver.kernel, d.particleSpacing, h)),
+          latticeSum(latticeKernelSum(solver->densityKernel(), d.solver.kernel, d.particleSpacing, h, d.dimensions)),
           periodic(PeriodicBox::make(d.domainMin, d.domainMax, d.periodic)),
           viscosity(viscosityModel(d.solver.viscosity, solver->defaultViscosity())),
-          latticeOrigin(d.domainMin), wallsOrigin(d.domainMin), soundSpeed(d.solver.soundSpeed) {
+          latticeOrigin(def.domainMin), wallsOrigin(def.domainMin), soundSpeed(d.solver.soundSpeed) {
+        // 2D: solids are sampled at origin + (k + ½) s; this puts their one z layer at z = 0.
+        if (def.dimensions == 2) latticeOrigin.z = wallsOrigin.z = -0.5f * def.particleSpacing;
         boundary.periodic = periodic;
         if (def.walls) sampleWalls();
         for (std::uint32_t face = 0; face < 6; ++face)
@@ -377,7 +386,8 @@ struct World::Impl {
     void sampleWalls() {
         wallsOrigin = latticeOrigin;
         const int layers = static_cast<int>(std::ceil(h / def.particleSpacing));
-        boundary.sampleBoxShell(wallsMin(), wallsMax(), def.particleSpacing, layers, 1.0f / latticeSum, h, threads, openFaces);
+        boundary.sampleBoxShell(wallsMin(), wallsMax(), def.particleSpacing, layers, 1.0f / latticeSum, h, threads, openFaces,
+                                def.dimensions);
     }
 
     /// Where the walls stand: on the lattice blocks fill (cell corners at latticeOrigin when
@@ -410,6 +420,15 @@ struct World::Impl {
     }
 
     [[nodiscard]] float massOf(MaterialIndex m) const { return materials[m].restDensity / latticeSum; }
+
+    /// A block as this world fills it: in 2D on the plane z = 0 (its z extent dropped).
+    [[nodiscard]] BlockDef inPlane(BlockDef block) const {
+        if (def.dimensions == 2) {
+            requireInPlane(2, "block.velocity", block.velocity);
+            block.min.z = block.max.z = 0.0f;
+        }
+        return block;
+    }
 
     /// Whether a lattice lies inside the walls and within one period of every periodic axis.
     [[nodiscard]] bool insideDomain(const Lattice& lattice) const {
@@ -732,12 +751,14 @@ bool World::insideDomain(const glm::vec3& min, const glm::vec3& max) const {
     return impl_->insideDomain(Lattice(min, max, impl_->def.particleSpacing));
 }
 
-std::uint32_t World::countBlock(const BlockDef& block) const {
+std::uint32_t World::countBlock(const BlockDef& blockIn) const {
+    const BlockDef block = impl_->inPlane(blockIn);
     const Lattice lattice = impl_->blockLattice(block.min, block.max);
     return static_cast<std::uint32_t>(std::min<std::uint64_t>(impl_->countLattice(lattice, Impl::Fill::Block), 0xffffffffu));
 }
 
-AddStatus World::addBlock(const BlockDef& block) {
+AddStatus World::addBlock(const BlockDef& blockIn) {
+    const BlockDef block = impl_->inPlane(blockIn);
     validateBox("block", block.min, block.max);
     if (block.material >= impl_->materials.size())
         throw std::invalid_argument("block.material: no material " + std::to_string(block.material));
@@ -778,8 +799,16 @@ void World::addObstacle(const ObstacleDef& def) {
         case ObstacleDef::Shape::Mesh:
             if (!obstacle.mesh) throw std::invalid_argument("obstacle.mesh: a mesh obstacle needs a mesh, got none");
             break;
+        case ObstacleDef::Shape::Circle:
+            requireFinite("obstacle.center", obstacle.center.x);
+            requireFinite("obstacle.center", obstacle.center.y);
+            requirePositive("obstacle.radius", obstacle.radius);
+            obstacle.center.z = 0.0f;
+            break;
+        case ObstacleDef::Shape::Polygon: validatePolygon(obstacle.polygon); break;
         default: throw std::invalid_argument("obstacle.shape: unknown shape");
     }
+    validateObstacleDimensions(obstacle, w.def.dimensions);
     obstacle.motion = validatedMotion(obstacle.motion, "obstacle.motion");
     const bool dynamic = obstacle.dynamics.has_value();
     if (dynamic && obstacle.motion.type != MotionDef::Type::None)
@@ -795,6 +824,7 @@ void World::addObstacle(const ObstacleDef& def) {
     // A moving obstacle only inside the walls: it must not double the shell where they meet.
     const float shell = moves && w.def.walls ? 0.0f : std::ceil(w.h / w.def.particleSpacing) * w.def.particleSpacing;
     glm::vec3 clipMin = w.def.domainMin - shell, clipMax = w.def.domainMax + shell;
+    if (w.def.dimensions == 2) clipMin.z = clipMax.z = 0.0f;  // the one layer in the plane
     for (int axis = 0; axis < 3; ++axis)
         if (w.periodic.periodic(axis)) {
             clipMin[axis] = w.def.domainMin[axis];
@@ -1038,7 +1068,12 @@ double World::totalMass() const {
     return sum;
 }
 
-std::uint32_t World::addEmitter(const EmitterDef& emitter) {
+std::uint32_t World::addEmitter(const EmitterDef& emitterIn) {
+    EmitterDef emitter = emitterIn;
+    if (impl_->def.dimensions == 2) {
+        requireInPlane(2, "emitter.velocity", emitter.velocity);
+        emitter.min.z = emitter.max.z = 0.0f;
+    }
     validateBox("emitter", emitter.min, emitter.max);
     if (emitter.material >= impl_->materials.size())
         throw std::invalid_argument("emitter.material: no material " + std::to_string(emitter.material));
@@ -1083,6 +1118,7 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,
                     w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.boundaryFluidNeighbors,
                     w.boundaryNearFluid, w.periodic, w.viscosity, w.threads, maxDt};
+    ctx.dimensions = w.def.dimensions;
     ctx.clock = &clock;
     w.pairTables.build(w.materials.size(), w.pairs);
     ctx.pairs = &w.pairTables;
@@ -1119,7 +1155,7 @@ double World::Impl::step(double maxDt, Clock clockMode) {
         if (loads) w.contacts.book(w.particles, w.threads, [&](std::uint32_t, const glm::vec3&) { return w.solidOfObstacle(m.index); });
     }
     if (w.def.walls) {
-        // No walls across a periodic axis, nor on an ocean's open sides.
+        // No walls across a periodic axis, the 2D plane, nor on an ocean's open sides.
         const auto [lo, hi] = w.wallLimits(std::numeric_limits<double>::infinity());
         const WallBox walls{glm::vec3(lo), glm::vec3(hi), margin, w.def.wallRestitution};
         walls.enforce(w.particles, w.threads);

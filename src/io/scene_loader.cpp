@@ -115,8 +115,10 @@ SceneEstimate estimate(const Scene& scene) {
         e.totalParticles = saturatingAdd(e.totalParticles, saturatingAdd(e.initialParticles[m], e.emittedParticles[m]));
     // Boundary particles: the container's shell, a few layers deep, ~40 bytes each.
     const glm::vec3 extent = (scene.world.domainMax - scene.world.domainMin) / s;
-    const double shell = 2.0 * (double{extent.x} * extent.y + double{extent.y} * extent.z + double{extent.z} * extent.x) *
-                         std::ceil(scene.world.supportRatio);
+    const double faces = scene.world.dimensions == 2
+                             ? double{extent.x} + extent.y  // 2D: the shell is the x and y faces' lines
+                             : double{extent.x} * extent.y + double{extent.y} * extent.z + double{extent.z} * extent.x;
+    const double shell = 2.0 * faces * std::ceil(scene.world.supportRatio);
     e.bytes = saturatingCount(static_cast<double>(e.totalParticles) * kBytesPerParticle + shell * 40.0);
     return e;
 }

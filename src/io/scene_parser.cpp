@@ -13,6 +13,7 @@
 #include <tide/io/motion_table.hpp>
 #include <tide/io/scene.hpp>
 
+#include "core/planar.hpp"
 #include "json_error_path.hpp"
 
 namespace tide::io {
@@ -68,6 +69,8 @@ std::string show(const json& value) {
 class Reader {
 public:
     std::vector<std::string> problems;
+    /// The scene's "dimensions": points and vectors have this many components (z = 0 in 2D).
+    int dimensions = 3;
 
     void fail(const std::string& path, const std::string& message) { problems.push_back(path + ": " + message); }
 
@@ -107,19 +110,28 @@ public:
         return x;
     }
 
-    std::optional<glm::vec3> vec3(const json& obj, const char* key, const std::string& path, bool required) {
+    /// A point or vector of the scene's space: [x, y, z], or [x, y] in a 2D scene (z = 0).
+    /// `components` 3 reads 3 numbers whatever the dimension (a colour).
+    std::optional<glm::vec3> vec3(const json& obj, const char* key, const std::string& path, bool required,
+                                  int components = 0) {
         const std::string where = join(path, key);
         if (!obj.contains(key)) {
             if (required) fail(where, "missing (required)");
             return std::nullopt;
         }
         const json& v = obj.at(key);
-        if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); })) {
-            fail(where, "must be an array of 3 numbers, got " + show(v));
+        const int n = components > 0 ? components : dimensions;
+        if (!v.is_array() || v.size() != static_cast<std::size_t>(n) ||
+            !std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); })) {
+            std::string message = n == 2 ? "must be an array of 2 numbers [x, y] (the scene is 2D), got "
+                                         : "must be an array of 3 numbers, got ";
+            if (components == 0 && n == 3 && v.is_array() && v.size() == 2)
+                message = "must be an array of 3 numbers (a 3D scene; [x, y] needs \"dimensions\": 2), got ";
+            fail(where, message + show(v));
             return std::nullopt;
         }
-        glm::vec3 out;
-        for (int a = 0; a < 3; ++a) {
+        glm::vec3 out(0.0f);
+        for (int a = 0; a < n; ++a) {
             const double x = v[static_cast<std::size_t>(a)].get<double>();
             if (!std::isfinite(x) || std::abs(x) > 1e30) {
                 fail(where, "must be finite, got " + show(v));
@@ -304,7 +316,7 @@ void readMaterials(Reader& r, const json& list, Scene& scene, std::vector<std::o
         std::optional<float> tension;
         if (auto v = r.number(list[i], "surface_tension", path, false, 0.0, 1e6)) tension = static_cast<float>(*v);
         ownTension.push_back(tension);
-        if (auto c = r.vec3(list[i], "color", path, false)) {
+        if (auto c = r.vec3(list[i], "color", path, false, 3)) {
             if (glm::any(glm::lessThan(*c, glm::vec3(0.0f))) || glm::any(glm::greaterThan(*c, glm::vec3(1.0f))))
                 r.fail(join(path, "color"), "components must be in [0, 1], got " + showVec(*c));
             else
@@ -395,7 +407,7 @@ std::optional<MaterialIndex> readMaterialRef(Reader& r, const json& obj, const s
     return std::nullopt;
 }
 
-const std::vector<std::string> kObstacleTypes{"box", "sphere", "cylinder", "plane", "mesh"};
+const std::vector<std::string> kObstacleTypes{"box", "sphere", "cylinder", "plane", "mesh", "circle", "polygon"};
 
 /// A unit direction: "x", "y", "z" (optionally signed: "-y") or 3 numbers, not all zero.
 std::optional<glm::vec3> readDirection(Reader& r, const json& j, const char* key, const std::string& path) {
@@ -423,6 +435,17 @@ std::optional<glm::vec3> readDirection(Reader& r, const json& j, const char* key
         return std::nullopt;
     }
     return glm::normalize(*v);
+}
+
+/// A rotation's "axis": any direction in 3D; in 2D only z, the default there.
+std::optional<glm::vec3> readRotationAxis(Reader& r, const json& j, const std::string& path) {
+    if (r.dimensions != 2) return readDirection(r, j, "axis", path);
+    if (!j.contains("axis")) return glm::vec3(0.0f, 0.0f, 1.0f);
+    const json& v = j.at("axis");
+    if (v.is_string() && (v == "z" || v == "+z" || v == "-z"))
+        return glm::vec3(0.0f, 0.0f, v == "-z" ? -1.0f : 1.0f);
+    r.fail(join(path, "axis"), "a 2D scene rotates about z only: \"z\" or \"-z\" (or leave it out), got " + show(v));
+    return std::nullopt;
 }
 
 /// A mesh's `scale`: a number or 3 numbers, all > 0 (default 1).
@@ -473,7 +496,7 @@ std::optional<MotionDef> readMotion(Reader& r, const json& j, const std::string&
         if (!r.object(j, path, {"type", "axis", "center", "angular_velocity", "amplitude", "period", "start_time", "ramp_time"}))
             return std::nullopt;
         m.type = MotionDef::Type::Rotation;
-        if (auto a = readDirection(r, j, "axis", path)) m.axis = *a;
+        if (auto a = readRotationAxis(r, j, path)) m.axis = *a;
         if (auto c = r.vec3(j, "center", path, true)) m.center = *c * scale;
         if (auto v = r.number(j, "angular_velocity", path, false, -1e6, 1e6)) m.angularVelocity = static_cast<float>(*v);
         if (auto v = r.number(j, "amplitude", path, false, -1e6, 1e6)) m.angularAmplitude = static_cast<float>(*v);
@@ -496,7 +519,7 @@ std::optional<MotionDef> readMotion(Reader& r, const json& j, const std::string&
             MotionTable table = readMotionTable(resolved, scale);
             m.keys = std::move(table.keys);
             if (table.hasAngle) {
-                if (auto a = readDirection(r, j, "axis", path)) m.axis = *a;
+                if (auto a = readRotationAxis(r, j, path)) m.axis = *a;
                 if (auto c = r.vec3(j, "center", path, true)) m.center = *c * scale;
             } else if (j.contains("axis") || j.contains("center")) {
                 r.fail(path, *file + " has no angle column: \"axis\" and \"center\" would not be used");
@@ -573,6 +596,20 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
     const auto type = r.typeOf(j, path);
     if (!type) return std::nullopt;
     ObstacleDef o;
+    const bool planar = r.dimensions == 2;
+    if (planar && (*type == "sphere" || *type == "cylinder" || *type == "mesh")) {
+        r.fail(join(path, "type"), "\"" + *type + "\" is a 3D shape; a 2D scene takes \"box\", \"plane\", \"circle\" or \"polygon\"");
+        return std::nullopt;
+    }
+    if (!planar && (*type == "circle" || *type == "polygon")) {
+        r.fail(join(path, "type"), "\"" + *type + "\" is a 2D shape; it needs \"dimensions\": 2 (in 3D: \"" +
+                                       (*type == "circle" ? "sphere" : "mesh") + "\")");
+        return std::nullopt;
+    }
+    if (planar && j.is_object() && j.contains("dynamic")) {
+        r.fail(join(path, "dynamic"), "floating bodies are 3D only");
+        return std::nullopt;
+    }
     if (*type == "box") {
         if (!r.object(j, path, {"type", "min", "max", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
         if (!readBox(r, j, path, scale, o.min, o.max)) return std::nullopt;
@@ -597,6 +634,32 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.axis = *axis;
         o.radius = static_cast<float>(*radius) * scale;
         o.length = static_cast<float>(*length) * scale;
+    } else if (*type == "circle") {
+        if (!r.object(j, path, {"type", "center", "radius", "motion", "name", "load_reference"})) return std::nullopt;
+        const auto c = r.vec3(j, "center", path, true);
+        const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
+        if (!c || !radius) return std::nullopt;
+        o.shape = ObstacleDef::Shape::Circle;
+        o.center = *c * scale;
+        o.radius = static_cast<float>(*radius) * scale;
+    } else if (*type == "polygon") {
+        if (!r.object(j, path, {"type", "points", "motion", "name", "load_reference"})) return std::nullopt;
+        const json& points = r.array(j, "points", path, true);
+        const std::size_t before = r.problems.size();
+        for (std::size_t k = 0; k < points.size(); ++k) {
+            const json holder = {{"p", points[k]}};
+            if (auto c = r.vec3(holder, "p", path, true)) o.polygon.emplace_back(c->x * scale, c->y * scale);
+            else r.problems.back() = indexed(join(path, "points"), k) + r.problems.back().substr(r.problems.back().find(':'));
+        }
+        if (r.problems.size() != before || !j.contains("points")) return std::nullopt;
+        try {
+            validatePolygon(o.polygon);
+        } catch (const std::invalid_argument& e) {
+            const std::string what = e.what();
+            r.fail(join(path, "points"), what.substr(what.find(": ") + 2));
+            return std::nullopt;
+        }
+        o.shape = ObstacleDef::Shape::Polygon;
     } else if (*type == "plane") {
         if (!r.object(j, path, {"type", "point", "normal", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
         const auto point = r.vec3(j, "point", path, true);
@@ -637,7 +700,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         }
         o.shape = ObstacleDef::Shape::Mesh;
     } else {
-        r.fail(join(path, "type"), "must be \"box\", \"sphere\", \"cylinder\", \"plane\" or \"mesh\", got \"" + *type +
+        r.fail(join(path, "type"), "must be \"box\", \"sphere\", \"cylinder\", \"plane\" or \"mesh\" (in 2D \"box\", \"plane\", \"circle\" or \"polygon\"), got \"" + *type +
                                        "\"" + suggestion(*type, kObstacleTypes));
         return std::nullopt;
     }
@@ -964,6 +1027,10 @@ void readGaugesAndProbes(Reader& r, const json& root, Scene& scene, float scale,
     const json& gauges = r.array(root, "gauges", "", false);
     for (std::size_t i = 0; i < gauges.size(); ++i) {
         const std::string path = indexed("gauges", i);
+        if (r.dimensions == 2 && gauges[i].is_object() && gauges[i].contains("z")) {
+            r.fail(join(path, "z"), "a 2D scene has no z: a gauge stands at x alone");
+            continue;
+        }
         if (!r.object(gauges[i], path, {"name", "x", "z"})) continue;
         const auto name = r.string(gauges[i], "name", path, true);
         const auto x = r.number(gauges[i], "x", path, true, -1e6, 1e6);
@@ -1045,7 +1112,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
 
     Reader r;
     Scene scene;
-    if (!r.object(root, "", {"name", "unit_scale", "domain", "gravity", "particle_spacing", "end_time", "settle", "solver",
+    if (!r.object(root, "", {"name", "dimensions", "unit_scale", "domain", "gravity", "particle_spacing", "end_time", "settle", "solver",
                              "materials", "material_pairs", "blocks", "emitters", "obstacles", "wavemaker", "damping", "ocean", "gauges", "probes", "output", "camera"}))
         throw SceneError(r.problems);
 
@@ -1054,13 +1121,21 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     if (auto name = r.string(root, "name", "", false)) scene.name = *name;
 
     WorldDef& w = scene.world;
+    if (root.contains("dimensions")) {
+        const json& d = root["dimensions"];
+        if (d.is_number_integer() && (d.get<long long>() == 2 || d.get<long long>() == 3))
+            r.dimensions = static_cast<int>(d.get<long long>());
+        else
+            r.fail("dimensions", "must be 2 or 3, got " + show(d));
+    }
+    w.dimensions = r.dimensions;
     bool domainOk = false;
     if (!root.contains("domain")) {
         r.fail("domain", "missing (required)");
     } else if (r.object(root["domain"], "domain", {"min", "max", "periodic"})) {
         glm::vec3 lo, hi;
         if (readBox(r, root["domain"], "domain", scale, lo, hi)) {
-            if (glm::any(glm::equal(lo, hi))) {
+            if (lo.x == hi.x || lo.y == hi.y || (r.dimensions == 3 && lo.z == hi.z)) {
                 r.fail("domain.max", "must exceed min on every axis, got " + showVec(hi / scale));
             } else {
                 w.domainMin = lo;
@@ -1071,10 +1146,13 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
         if (root["domain"].contains("periodic")) {
             const json& v = root["domain"]["periodic"];
             const auto isBool = [](const json& e) { return e.is_boolean(); };
-            if (!v.is_array() || v.size() != 3 || !std::all_of(v.begin(), v.end(), isBool))
-                r.fail("domain.periodic", "must be an array of 3 booleans (x, y, z), got " + show(v));
+            const std::size_t n = static_cast<std::size_t>(r.dimensions);
+            if (!v.is_array() || v.size() != n || !std::all_of(v.begin(), v.end(), isBool))
+                r.fail("domain.periodic", std::string("must be an array of ") +
+                                              (n == 2 ? "2 booleans (x, y) in a 2D scene" : "3 booleans (x, y, z)") +
+                                              ", got " + show(v));
             else
-                for (int a = 0; a < 3; ++a) w.periodic[a] = v[static_cast<std::size_t>(a)].get<bool>();
+                for (std::size_t a = 0; a < n; ++a) w.periodic[static_cast<int>(a)] = v[a].get<bool>();
         }
     }
     if (auto g = r.vec3(root, "gravity", "", false)) w.gravity = *g * scale;
@@ -1124,7 +1202,8 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
 
     if (root.contains("wavemaker")) readWaveMaker(r, root["wavemaker"], scene, scale, domainOk);
     if (root.contains("damping")) readDamping(r, root["damping"], scene, scale);
-    if (root.contains("ocean")) readOcean(r, root["ocean"], scene, scale, domainOk);
+    if (root.contains("ocean") && r.dimensions == 2) r.fail("ocean", "an ocean zone is 3D only; a 2D scene makes waves with \"wavemaker\"");
+    else if (root.contains("ocean")) readOcean(r, root["ocean"], scene, scale, domainOk);
     readGaugesAndProbes(r, root, scene, scale, domainOk);
 
     const json& blocks = r.array(root, "blocks", "", false);
@@ -1192,10 +1271,16 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
         const auto eye = r.vec3(cam, "eye", "camera", true);
         const auto target = r.vec3(cam, "target", "camera", true);
         const auto fov = r.number(cam, "fov", "camera", false, 0.0, 179.0, true);
-        if (eye && target && *eye == *target)
+        if (eye && target && *eye == *target && r.dimensions == 3)
             r.fail("camera.target", "must differ from camera.eye, got " + showVec(*target));
-        else if (eye && target && (!cam.contains("fov") || fov))
-            scene.camera = CameraDef{*eye * scale, *target * scale, fov ? static_cast<float>(*fov) : 45.0f};
+        else if (eye && target && (!cam.contains("fov") || fov)) {
+            const float fovDegrees = fov ? static_cast<float>(*fov) : 45.0f;
+            glm::vec3 from = *eye * scale;
+            // 2D: the eye looks at the plane from +z, far enough to take in the domain.
+            if (r.dimensions == 2)
+                from.z = 0.6f * glm::length(w.domainMax - w.domainMin) / std::tan(0.5f * fovDegrees * 3.14159265f / 180.0f);
+            scene.camera = CameraDef{from, *target * scale, fovDegrees};
+        }
     }
 
     if (r.problems.empty())

@@ -23,10 +23,11 @@ Camera fitClipPlanes(Camera camera, const glm::vec3& min, const glm::vec3& max) 
 
 Camera defaultCamera(const glm::vec3& min, const glm::vec3& max) {
     Camera c;
-    // A 3/4 view: from the front-right corner, about 30° above the horizon, at the distance
+    // A 3/4 view (of a 3D container): from the front-right corner, about 30° above the horizon, at the distance
     // where every corner of the container fits the view (vertical field of view, and the
     // horizontal one of a 4:3 image or wider) with a small margin.
-    const glm::vec3 forward = -glm::normalize(glm::vec3(0.55f, 0.6f, 1.0f));
+    // A 2D world's container is flat (min.z = max.z): it is seen face on, from +z.
+    const glm::vec3 forward = min.z == max.z ? glm::vec3(0.0f, 0.0f, -1.0f) : -glm::normalize(glm::vec3(0.55f, 0.6f, 1.0f));
     const glm::vec3 right = glm::normalize(glm::cross(forward, glm::vec3(0.0f, 1.0f, 0.0f)));
     const glm::vec3 up = glm::cross(right, forward);
     const float tanVertical = 0.92f * std::tan(glm::radians(0.5f * c.fovDegrees));

@@ -94,6 +94,20 @@ void plane(std::vector<SolidVertex>& out, const ObstacleDef& o, float size) {
     for (std::size_t k = out.size() - 6; k < out.size(); ++k) out[k].normal = n;
 }
 
+/// A 2D world's shape (a circle, a polygon, a box through the plane) drawn as a slab
+/// ±halfDepth about z = 0: the polygon's outline extruded, with its faces fanned from the centroid.
+void prism(std::vector<SolidVertex>& out, const std::vector<glm::vec2>& outline, float halfDepth) {
+    const std::size_t n = outline.size();
+    glm::vec2 centre(0.0f);
+    for (const glm::vec2& c : outline) centre += c / static_cast<float>(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::vec2 a = outline[i], b = outline[(i + 1) % n];
+        quad(out, {a, -halfDepth}, {b, -halfDepth}, {b, halfDepth}, {a, halfDepth});
+        triangle(out, {centre, halfDepth}, {a, halfDepth}, {b, halfDepth});
+        triangle(out, {centre, -halfDepth}, {b, -halfDepth}, {a, -halfDepth});
+    }
+}
+
 }  // namespace
 
 std::vector<SolidVertex> tessellate(const std::vector<ObstacleDef>& obstacles, float planeSize,
@@ -102,8 +116,26 @@ std::vector<SolidVertex> tessellate(const std::vector<ObstacleDef>& obstacles, f
     for (std::size_t k = 0; k < obstacles.size(); ++k) {
         const ObstacleDef& o = obstacles[k];
         const std::size_t first = out.size();
+        // 2D worlds' solids: slabs a few per cent of the scene deep.
+        const float halfDepth = 0.02f * planeSize;
         switch (o.shape) {
-            case ObstacleDef::Shape::Box: box(out, o.min, o.max); break;
+            case ObstacleDef::Shape::Box:
+                if (o.max.z - o.min.z > 1.0e3f)  // a 2D box: a prism through the plane
+                    box(out, {o.min.x, o.min.y, -halfDepth}, {o.max.x, o.max.y, halfDepth});
+                else
+                    box(out, o.min, o.max);
+                break;
+            case ObstacleDef::Shape::Circle: {
+                constexpr int kSegments = 32;
+                std::vector<glm::vec2> outline;
+                for (int s = 0; s < kSegments; ++s) {
+                    const float a = 2.0f * kPi * static_cast<float>(s) / kSegments;
+                    outline.push_back(glm::vec2(o.center) + o.radius * glm::vec2(std::cos(a), std::sin(a)));
+                }
+                prism(out, outline, halfDepth);
+                break;
+            }
+            case ObstacleDef::Shape::Polygon: prism(out, o.polygon, halfDepth); break;
             case ObstacleDef::Shape::Sphere: sphere(out, o.center, o.radius); break;
             case ObstacleDef::Shape::Cylinder: cylinder(out, o); break;
             case ObstacleDef::Shape::Plane: plane(out, o, planeSize); break;

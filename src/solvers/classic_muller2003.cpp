@@ -15,7 +15,7 @@ namespace tide {
 
 void ClassicMuller2003::computeDensityAndPressure(StepContext& ctx) const {
     ParticleStore& p = ctx.particles;
-    const kernels::Poly6 poly6(ctx.supportRadius);
+    const kernels::Poly6 poly6 = ctx.poly6();
     const float selfWeight = poly6.valueSq(0.0f);
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
@@ -39,7 +39,7 @@ void ClassicMuller2003::computeDensityAndPressure(StepContext& ctx) const {
 
 void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
     ParticleStore& p = ctx.particles;
-    const kernels::Spiky spiky(ctx.supportRadius);
+    const kernels::Spiky spiky(ctx.supportRadius, ctx.dimensions);
     const kernels::Viscosity viscosity(ctx.supportRadius);
     // Eq. (14), the default model, shares the pressure loop's pass over the neighbours (as
     // addViscosity computes it for the other solvers); another model is added before it.
@@ -124,7 +124,7 @@ double ClassicMuller2003::step(StepContext& ctx) {
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
     ctx.lap(Phase::Integration);
-    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.poly6(),
                 ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.25f, ctx.threads);
     ctx.lap(Phase::NonPressureForces);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });

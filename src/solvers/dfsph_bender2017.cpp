@@ -283,7 +283,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             break;
         // Full Jacobi steps, as the paper takes, for one rest density; with a density contrast
         // the light particles' rows are far from diagonally dominant and full steps diverge.
-        const float weight = (contrast_.uniform() ? 1.0f : kRelaxation) * weightScale_(ctx.supportRadius / ctx.particleSpacing, ctx.solver.kernel);
+        const float weight = (contrast_.uniform() ? 1.0f : kRelaxation) * weightScale_(ctx.supportRadius / ctx.particleSpacing, ctx.solver.kernel, ctx.dimensions);
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             k_[i] = weight * error_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
             p.warmDivergence[i] += k_[i];
@@ -330,7 +330,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     });
     push();
     const float heavyBall = ctx.solver.momentum >= 0.0f ? ctx.solver.momentum : kMomentum;
-    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing, ctx.solver.kernel);
+    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing, ctx.solver.kernel, ctx.dimensions);
     // A step the free-fall limit or a short max_dt shortened removes the compression the
     // particles already have (ρ_i − ρ0, what earlier solves left within their tolerance) over
     // the step it would otherwise have taken, not within dt (Baumgarte 1972, "Stabilization of constraints and
@@ -496,7 +496,7 @@ double DfsphBender2017::step(StepContext& ctx) {
         ctx.lap(Phase::Integration);
         // positionK_ is free until the density solve predicts positions into it.
         // In SIMD lanes over the (x_j, m_j) rows.
-        xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius,
+        xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.poly6(),
                     ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads, positionK_,
                     uniform ? positionMass_.data() : mixedRows_.data());
         ctx.lap(Phase::NonPressureForces);
@@ -524,7 +524,7 @@ double DfsphBender2017::step(StepContext& ctx) {
     const float smoothing = static_cast<float>(std::min(1.0, dt / driftTime));
     // ∇C_i = Σ_j V_j ∇W_ij from this step's gradient sums (Σ_j m_j ∇W_ij, or m_i Σ_j ∇W_ij
     // with several rest densities: every particle fills one lattice volume) over ρ_i.
-    const FickianShifting shifting(ctx.solver.shifting, ctx.particleSpacing, ctx.supportRadius);
+    const FickianShifting shifting(ctx.solver.shifting, ctx.particleSpacing, ctx.supportRadius, ctx.dimensions);
     const float differenceShare = ctx.solver.differenceForm;
     if (differenceShare > 0.0f) smoothKappa(ctx);  // into error_, free after the solve
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {

@@ -18,29 +18,33 @@
 
 namespace tide {
 
-/// max_k G(k) on the simple cubic lattice of unit spacing, the kernel `shape` with support
-/// `supportRatio` (in spacings), k over the Brillouin zone on a 13³ grid.
-[[nodiscard]] float latticeJacobiGain(float supportRatio, KernelShape shape = KernelShape::CubicSpline);
+/// max_k G(k) on the simple cubic lattice of unit spacing (the square lattice in 2D), the
+/// kernel `shape` with support `supportRatio` (in spacings), k over the Brillouin zone on a 13³ grid.
+[[nodiscard]] float latticeJacobiGain(float supportRatio, KernelShape shape = KernelShape::CubicSpline,
+                                      int dimensions = 3);
 
 /// The factor for Jacobi weights tuned with the cubic spline at the default support (2 spacings):
 /// min(1, latticeJacobiGain(2) / latticeJacobiGain(supportRatio, shape)); exactly 1 for the
-/// cubic spline up to 2 spacings.
-[[nodiscard]] float jacobiWeightScale(float supportRatio, KernelShape shape = KernelShape::CubicSpline);
+/// cubic spline up to 2 spacings. In 2D both gains are the square lattice's.
+[[nodiscard]] float jacobiWeightScale(float supportRatio, KernelShape shape = KernelShape::CubicSpline,
+                                      int dimensions = 3);
 
 /// jacobiWeightScale for a solver's steps, computed again only when the support changes.
 class JacobiWeightScale {
 public:
-    [[nodiscard]] float operator()(float supportRatio, KernelShape shape) {
-        if (supportRatio != ratio_ || shape != shape_) {
+    [[nodiscard]] float operator()(float supportRatio, KernelShape shape, int dimensions = 3) {
+        if (supportRatio != ratio_ || shape != shape_ || dimensions != dimensions_) {
             ratio_ = supportRatio;
             shape_ = shape;
-            scale_ = jacobiWeightScale(supportRatio, shape);
+            dimensions_ = dimensions;
+            scale_ = jacobiWeightScale(supportRatio, shape, dimensions);
         }
         return scale_;
     }
 
 private:
     float ratio_ = -1.0f, scale_ = 1.0f;
+    int dimensions_ = 3;
     KernelShape shape_ = KernelShape::CubicSpline;
 };
 

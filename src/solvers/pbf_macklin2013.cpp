@@ -37,7 +37,7 @@ float PbfMacklin2013::relaxation(const StepContext& ctx) {
     if (latticeKey_[0] != ctx.supportRadius || latticeKey_[1] != ctx.particleSpacing) {
         // V = 1/Σ W over the rest lattice; Σ_j |∇_j C_i|² = V² Σ_j |∇W_ij|² there (Σ_j ∇W_ij = 0).
         const kernels::SmoothingKernel w = ctx.kernel();
-        const kernels::Spiky spiky(ctx.supportRadius);
+        const kernels::Spiky spiky(ctx.supportRadius, ctx.dimensions);
         const float s = ctx.particleSpacing;
         const int reach = static_cast<int>(std::ceil(ctx.supportRadius / s));
         double sumW = 0.0, sumSquares = 0.0;
@@ -59,7 +59,7 @@ float PbfMacklin2013::relaxation(const StepContext& ctx) {
 void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
     ParticleStore& p = ctx.particles;
     const kernels::SmoothingKernel w = ctx.kernel();
-    const kernels::Spiky spiky(ctx.supportRadius);
+    const kernels::Spiky spiky(ctx.supportRadius, ctx.dimensions);
     const float h = ctx.supportRadius, h2 = h * h;
     const float self = w.value(0.0f);
     const float tensileScale = -kTensileK * h2;

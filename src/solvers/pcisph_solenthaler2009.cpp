@@ -163,7 +163,7 @@ PcisphSolenthaler2009::Solve PcisphSolenthaler2009::solvePressure(StepContext& c
     // The walls' hydrostatic part acts from the start, before any fluid pressure.
     computePressureAccel(ctx);
     Solve solve;
-    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing, ctx.solver.kernel);
+    const float relaxation = kRelaxation * weightScale_(ctx.supportRadius / ctx.particleSpacing, ctx.solver.kernel, ctx.dimensions);
     for (; solve.iterations < ctx.solver.maxIterations; ++solve.iterations) {
         predictPositions(ctx, dt);
         predictCompression(ctx, dt);
@@ -238,7 +238,7 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
         p.pressure[i] = pressure_[i];
     });
     ctx.lap(Phase::Integration);
-    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f,
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.poly6(), ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f,
                 ctx.threads);
     ctx.lap(Phase::NonPressureForces);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });

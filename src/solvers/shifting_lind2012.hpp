@@ -32,16 +32,18 @@ struct FickianShifting {
     float spacing;                ///< s, m
     std::uint32_t minNeighbors;   ///< fewer fluid neighbours: at the free surface, no shift
 
-    /// A neighbourhood counts as full from 3/4 of a sphere of the support's radius filled
-    /// at the lattice's number density (25 of 33.5 at 2 spacings).
+    /// A neighbourhood counts as full from 3/4 of a sphere (in 2D a disc) of the support's
+    /// radius filled at the lattice's number density (25 of 33.5 at 2 spacings; 9 of 12.6 in 2D).
     static constexpr float kFullNeighborhood = 0.75f;
     /// A shift moves at most this many spacings a step.
     static constexpr float kMaxShift = 0.05f;
 
-    FickianShifting(float coefficientIn, float spacingIn, float supportRadius)
+    FickianShifting(float coefficientIn, float spacingIn, float supportRadius, int dimensions = 3)
         : coefficient(coefficientIn), spacing(spacingIn),
-          minNeighbors(static_cast<std::uint32_t>(kFullNeighborhood * (4.0f / 3.0f) * std::numbers::pi_v<float> *
-                                                  std::pow(supportRadius / spacingIn, 3.0f))) {}
+          minNeighbors(static_cast<std::uint32_t>(
+              dimensions == 2 ? kFullNeighborhood * std::numbers::pi_v<float> * std::pow(supportRadius / spacingIn, 2.0f)
+                              : kFullNeighborhood * (4.0f / 3.0f) * std::numbers::pi_v<float> *
+                                    std::pow(supportRadius / spacingIn, 3.0f))) {}
 
     [[nodiscard]] bool enabled() const { return coefficient > 0.0f; }
     /// Whether particle i shifts: a full neighbourhood and no wall particle within reach.

@@ -60,12 +60,18 @@ struct StepContext {
     const glm::vec4* positionMassRows = nullptr;
     const glm::vec4* velocityRows = nullptr;
     const glm::vec4* viscosityRows = nullptr;
+    /// The world's dimension (WorldDef::dimensions): 2 normalises the kernels per area.
+    int dimensions = 3;
 
     /// x_a − x_b to the nearest periodic image: every pair vector of a solver, fluid–fluid
     /// and fluid–boundary, goes through this (the plain difference without periodic axes).
     [[nodiscard]] glm::vec3 delta(const glm::vec3& a, const glm::vec3& b) const { return periodic.delta(a, b); }
     /// The smoothing kernel of the sums (SolverDef::kernel), support h.
-    [[nodiscard]] kernels::SmoothingKernel kernel() const { return kernels::SmoothingKernel(supportRadius, solver.kernel); }
+    [[nodiscard]] kernels::SmoothingKernel kernel() const {
+        return kernels::SmoothingKernel(supportRadius, solver.kernel, dimensions);
+    }
+    /// Müller's Poly6 (classic's density, the XSPH filter), support h.
+    [[nodiscard]] kernels::Poly6 poly6() const { return kernels::Poly6(supportRadius, dimensions); }
     /// Books the time since the last lap to `phase`.
     void lap(Phase phase) const {
         if (clock) clock->lap(phase);

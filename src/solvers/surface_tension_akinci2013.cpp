@@ -53,8 +53,8 @@ float addSurfaceTension(const StepContext& ctx, std::span<glm::vec3> accel) {
     const ParticleStore& p = ctx.particles;
     std::vector<glm::vec3> normals;
     if (tension) computeNormals(ctx, normals);
-    const kernels::Cohesion cohesion(ctx.supportRadius);
-    const kernels::Adhesion adhesionKernel(ctx.supportRadius);
+    const kernels::Cohesion cohesion(ctx.supportRadius, ctx.dimensions);
+    const kernels::Adhesion adhesionKernel(ctx.supportRadius, ctx.dimensions);
     return std::sqrt(parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) {
         const MaterialIndex a = p.material[i];
         const MaterialDef& mat = ctx.materials[a];

@@ -59,6 +59,7 @@ void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
     const ParticleStore& p = ctx.particles;
     const kernels::SmoothingKernel w = ctx.kernel();
     const float h2 = ctx.supportRadius * ctx.supportRadius * 0.25f;  // smoothing length = support / 2
+    const float factor = 2.0f * static_cast<float>(ctx.dimensions + 2);  // 2(d + 2): 10 in 3D, 8 in 2D
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         const glm::vec3 vi = p.velocity[i];
@@ -85,11 +86,11 @@ void addMonaghan2005(const StepContext& ctx, std::span<glm::vec3> accel) {
                 const float vr = glm::dot(vi - vb, rib);
                 const glm::vec3 term = (ctx.boundary.volume * vr / (r * r + 0.01f * h2)) * w.gradient(rib, r);
                 wallSum += term;
-                if (loads) loads[k] += (p.mass[i] * 10.0f * scale) * term;  // the force b puts on i
+                if (loads) loads[k] += (p.mass[i] * factor * scale) * term;  // the force b puts on i
             }
             sum += scale * wallSum;
         }
-        accel[i] += 10.0f * sum;  // 2(d + 2), d = 3
+        accel[i] += factor * sum;
     });
 }
 
@@ -161,7 +162,7 @@ void addMorris1997(const StepContext& ctx, std::span<glm::vec3> accel) {
 
 void addMuller2003(const StepContext& ctx, std::span<glm::vec3> accel) {
     const ParticleStore& p = ctx.particles;
-    const kernels::Viscosity viscosity(ctx.supportRadius);
+    const kernels::Viscosity viscosity(ctx.supportRadius, ctx.dimensions);
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         const glm::vec3 vi = p.velocity[i];

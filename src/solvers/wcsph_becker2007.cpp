@@ -95,7 +95,7 @@ double WcsphBecker2007::step(StepContext& ctx) {
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });
     ctx.lap(Phase::Integration);
     // rows_ is free now: XSPH packs its (v_j, ρ_j) rows there.
-    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f,
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.poly6(), ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f,
                 ctx.threads, rows_, lanes ? positionMass_.data() : nullptr);
     ctx.lap(Phase::NonPressureForces);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.position[i] += dtf * p.velocity[i]; });

@@ -30,12 +30,12 @@ public:
     /// With `positionMass`, the rows (x_j, m_j) of every particle, the sums run in SIMD lanes
     /// (pair_sums::xsphSum) over rows (v_j, ρ_j) packed into `scratch`, and the smoothed
     /// velocities go straight to p.velocity.
-    void apply(ParticleStore& p, const NeighborList& neighbors, const PeriodicBox& box, float supportRadius, float epsilon,
-               int threads, std::span<glm::vec4> scratch = {}, const glm::vec4* positionMass = nullptr) {
+    /// `poly6` is the smoothing kernel, normalised for the world's dimension.
+    void apply(ParticleStore& p, const NeighborList& neighbors, const PeriodicBox& box, const kernels::Poly6& poly6,
+               float epsilon, int threads, std::span<glm::vec4> scratch = {}, const glm::vec4* positionMass = nullptr) {
         if (epsilon <= 0.0f) return;
         if (positionMass != nullptr && scratch.size() >= p.size()) {
             parallelFor(p.size(), threads, [&](std::uint32_t i) { scratch[i] = glm::vec4(p.velocity[i], p.density[i]); });
-            const kernels::Poly6 poly6(supportRadius);
             const float scale = epsilon * poly6.norm;
             parallelFor(p.size(), threads, [&](std::uint32_t i) {
                 const auto list = neighbors.of(i);
@@ -46,14 +46,14 @@ public:
             return;
         }
         if (scratch.size() >= p.size()) {
-            smooth(p, neighbors, box, supportRadius, epsilon, threads, [&](std::uint32_t i, const glm::vec3& v) {
+            smooth(p, neighbors, box, poly6, epsilon, threads, [&](std::uint32_t i, const glm::vec3& v) {
                 scratch[i] = glm::vec4(v, 0.0f);
             });
             parallelFor(p.size(), threads, [&](std::uint32_t i) { p.velocity[i] = glm::vec3(scratch[i]); });
             return;
         }
         filtered_.resize(p.size());
-        smooth(p, neighbors, box, supportRadius, epsilon, threads, [&](std::uint32_t i, const glm::vec3& v) { filtered_[i] = v; });
+        smooth(p, neighbors, box, poly6, epsilon, threads, [&](std::uint32_t i, const glm::vec3& v) { filtered_[i] = v; });
         // Copied back, not swapped: the velocity array stays where it is between steps (views
         // of it, the Python module's numpy arrays, keep pointing at the current velocities).
         parallelFor(p.size(), threads, [&](std::uint32_t i) { p.velocity[i] = filtered_[i]; });
@@ -61,9 +61,8 @@ public:
 
 private:
     template <class Store>
-    static void smooth(const ParticleStore& p, const NeighborList& neighbors, const PeriodicBox& box, float supportRadius,
-                       float epsilon, int threads, Store&& store) {
-        const kernels::Poly6 poly6(supportRadius);
+    static void smooth(const ParticleStore& p, const NeighborList& neighbors, const PeriodicBox& box,
+                       const kernels::Poly6& poly6, float epsilon, int threads, Store&& store) {
         parallelFor(p.size(), threads, [&](std::uint32_t i) {
             const glm::vec3 xi = p.position[i];
             const glm::vec3 vi = p.velocity[i];

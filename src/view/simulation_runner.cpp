@@ -84,12 +84,14 @@ void SimulationRunner::apply(const Command& c) {
             World& world = source_->world();
             const auto& position = world.particles().position;
             const auto velocity = world.velocities();
+            glm::vec3 deltaV = c.deltaV;
+            if (world.def().dimensions == 2) deltaV.z = 0.0f;  // a 2D world's particles stay in the plane
             for (std::size_t i = 0; i < position.size(); ++i) {
                 const glm::vec3 r = position[i] - c.origin;
                 const float along = glm::dot(r, c.direction);
                 if (along <= 0.0f) continue;
                 const float distance = glm::length(r - along * c.direction);
-                if (distance < c.radius) velocity[i] += c.deltaV * (1.0f - distance / c.radius);
+                if (distance < c.radius) velocity[i] += deltaV * (1.0f - distance / c.radius);
             }
             break;
         }
