@@ -197,7 +197,7 @@ TEST(World2D, DamBreakSurgeFrontAgainstKoshizukaOka1996) {
 
 // Every solver runs the 2D column: in the plane, no escapes, and the front moving out.
 TEST(World2D, EverySolverRunsTheColumn) {
-    for (const std::string solver : {"classic", "wcsph", "pcisph", "dfsph"}) {
+    for (const std::string solver : {"classic", "wcsph", "pcisph", "dfsph", "pbf"}) {
         const auto front = surgeFront(solver, 20, {1.0});
         std::printf("%s: Z(T = 1) = %.3f\n", solver.c_str(), front[0].second);
         EXPECT_GT(front[0].second, 1.2) << solver;
