@@ -671,15 +671,17 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
 /// irregular sea (spectrum). Lengths scaled by `scale`.
 void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool domainOk) {
     const std::string path = "wavemaker";
-    if (!r.object(j, path, {"type", "x", "depth", "wave_height", "period", "ramp_time", "spectrum"})) return;
+    if (!r.object(j, path, {"type", "x", "depth", "wave_height", "period", "ramp_time", "spectrum", "order"}))
+        return;
     WaveMakerDef w;
     bool ok = true;
     if (auto type = r.string(j, "type", path, true)) {
         if (*type == "piston") w.type = WaveMakerDef::Type::Piston;
         else if (*type == "flap") w.type = WaveMakerDef::Type::Flap;
+        else if (*type == "solitary") w.type = WaveMakerDef::Type::Solitary;
         else {
-            r.fail(join(path, "type"), "must be \"piston\" or \"flap\", got \"" + *type + "\"" +
-                                           suggestion(*type, {"piston", "flap"}));
+            r.fail(join(path, "type"), "must be \"piston\", \"flap\" or \"solitary\", got \"" + *type + "\"" +
+                                           suggestion(*type, {"piston", "flap", "solitary"}));
             ok = false;
         }
     } else {
@@ -692,6 +694,10 @@ void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool dom
     if (x) w.x = static_cast<float>(*x) * scale;
     if (depth) w.depth = static_cast<float>(*depth) * scale;
     if (ramp) w.rampTime = static_cast<float>(*ramp);
+    if (auto order = r.number(j, "order", path, false, 1.0, 2.0)) {
+        if (*order != std::floor(*order)) r.fail(join(path, "order"), "must be 1 or 2, got " + show(j.at("order")));
+        w.order = static_cast<int>(*order);
+    }
     const WorldDef& world = scene.world;
     if (x && domainOk && !(w.x > world.domainMin.x && w.x < world.domainMax.x)) {
         std::ostringstream msg;
@@ -707,7 +713,17 @@ void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool dom
         ok = false;
     }
     const bool regular = j.contains("wave_height") || j.contains("period");
-    if (j.contains("spectrum")) {
+    if (w.type == WaveMakerDef::Type::Solitary) {
+        // One solitary wave of wave_height (Goring 1978): no period, no spectrum.
+        for (const char* key : {"period", "spectrum"})
+            if (j.contains(key)) {
+                r.fail(join(path, key), "a solitary wave has only a wave_height, got " + show(j.at(key)));
+                ok = false;
+            }
+        const auto height = r.number(j, "wave_height", path, true, 0.0, 1e300, true);
+        ok = ok && height;
+        if (height) w.waveHeight = static_cast<float>(*height) * scale;
+    } else if (j.contains("spectrum")) {
         if (regular) {
             r.fail(path, "give either spectrum (irregular waves) or wave_height and period (regular waves), not both");
             return;
