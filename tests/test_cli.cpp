@@ -507,7 +507,7 @@ TEST(Cli, LoadsOnObstaclesWallsAndPaddlesAreWrittenAsForcesCsv) {
   "name": "loads", "domain": {"min": [0, 0, 0], "max": [0.8, 0.3, 0.12], "periodic": [false, false, true]},
   "particle_spacing": 0.03, "end_time": 0.2,
   "materials": [{"name": "water", "density": 1000}],
-  "wavemaker": {"type": "piston", "x": 0.1, "depth": 0.15, "wave_height": 0.02, "period": 0.8, "ramp_time": 0.4},
+  "wavemaker": {"type": "piston", "x": 0.1, "depth": 0.15, "wave_height": 0.02, "period": 0.6, "ramp_time": 0.4},
   "obstacles": [{"type": "box", "min": [0.5, 0, 0], "max": [0.56, 0.09, 0.12], "name": "step"},
                 {"type": "cylinder", "center": [0.7, 0.15, 0.06], "axis": [0, 1, 0], "radius": 0.03, "length": 0.3}],
   "blocks": [{"min": [0.1, 0, 0], "max": [0.8, 0.15, 0.12]}],

@@ -14,6 +14,7 @@
 #include <tide/io/scene.hpp>
 
 #include "json_error_path.hpp"
+#include "sources/wave_maker.hpp"
 
 namespace tide::io {
 
@@ -773,6 +774,18 @@ void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool dom
         if (height && depth && w.waveHeight >= w.depth) {
             r.fail(join(path, "wave_height"), "must be below the depth " + show(j.at("depth")) + ", got " +
                                                   show(j.at("wave_height")));
+            ok = false;
+        }
+    }
+    if (ok && domainOk && glm::length(world.gravity) > 0.0f && world.particleSpacing > 0.0f) {
+        // A wave the tank or the spacing cannot hold (the World refuses it too; here so that
+        // `tide validate` does): the check's message starts with the field.
+        try {
+            checkWaveFitsTank(w, world.domainMax.x - w.x, world.particleSpacing, glm::length(world.gravity));
+        } catch (const std::invalid_argument& e) {
+            const std::string message = e.what();
+            const std::size_t colon = message.find(": ");
+            r.fail(message.substr(0, colon), colon == std::string::npos ? message : message.substr(colon + 2));
             ok = false;
         }
     }
