@@ -39,15 +39,28 @@ int main(int argc, char** argv) {
     tide::World world = tide::scenarios::waveFlume(spacing, length, depth, paddle, 0.0f, threads);
     std::printf("flume %.2f m, %u particles, d %.3f m, H %.3f m (%.1f spacings), stroke %.3f m, c = %.4f m/s\n", length,
                 world.particles().size(), depth, height, height / spacing, stroke, c);
-    std::vector<double> crest(at.size(), -1.0), when(at.size(), 0.0);
+    std::vector<double> crest(at.size(), -1.0), when(at.size(), 0.0), still(at.size(), 0.0);
+    std::vector<std::vector<double>> records(at.size());
     const float z = 0.5f * world.def().domainMax.z;
+    // Elevations from the level each gauge reads before the wave (the gauges read still water
+    // ~half a spacing low: docs/waves.md).
+    for (std::size_t k = 0; k < at.size(); ++k) still[k] = world.surfaceHeight(at[k], z);
     const double dt = 0.01, end = t0 + (at.back() - paddle.x) / c + 0.5;
     for (double t = dt; t <= end + 1e-9; t += dt) {
         world.advance(dt);
-        for (std::size_t g2 = 0; g2 < at.size(); ++g2) {
-            const double eta = world.surfaceHeight(at[g2], z) - depth;
-            if (std::isfinite(eta) && eta > crest[g2]) crest[g2] = eta, when[g2] = world.time();
+        for (std::size_t k = 0; k < at.size(); ++k) {
+            const double eta = world.surfaceHeight(at[k], z) - still[k];
+            records[k].push_back(std::isfinite(eta) ? eta : 0.0);
+            if (std::isfinite(eta) && eta > crest[k]) crest[k] = eta;
         }
+    }
+    // The crest's passage: the centroid in time of η² over the samples above half the crest
+    // (less noisy than the time of the highest sample).
+    for (std::size_t k = 0; k < at.size(); ++k) {
+        double w = 0.0, wt = 0.0;
+        for (std::size_t s = 0; s < records[k].size(); ++s)
+            if (records[k][s] > 0.5 * crest[k]) w += records[k][s] * records[k][s], wt += records[k][s] * records[k][s] * dt * (s + 1);
+        when[k] = w > 0.0 ? wt / w : 0.0;
     }
     for (std::size_t k = 0; k < at.size(); ++k)
         std::printf("%2zu depths (x = %.3f m): crest %.4f m (%+.1f %%), at %.3f s\n", k + 2, at[k], crest[k],
