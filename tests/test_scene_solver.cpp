@@ -34,8 +34,11 @@ TEST(SceneSolver, DivergenceToleranceDefaultsToTheDensitys) {
     EXPECT_EQ(parseWithSolver(R"({"max_divergence_error": 0.001})").world.solver.maxDivergenceError, 0.001f);
 }
 
-TEST(SceneSolver, ShiftingIsOffUnlessTheSceneSetsIt) {
-    EXPECT_EQ(parseWithSolver("{}").world.solver.shifting, 0.0f);
+// Unset, shifting and the difference form are automatic: on in a world with a wave maker,
+// off elsewhere (World::addWaveMaker; test_wave_gauges.cpp WaveNumerics.*).
+TEST(SceneSolver, ShiftingIsAutomaticUnlessTheSceneSetsIt) {
+    EXPECT_LT(parseWithSolver("{}").world.solver.shifting, 0.0f);
+    EXPECT_EQ(parseWithSolver(R"({"shifting": 0})").world.solver.shifting, 0.0f);
     EXPECT_EQ(parseWithSolver(R"({"shifting": 0.2})").world.solver.shifting, 0.2f);
 }
 
@@ -44,8 +47,9 @@ TEST(SceneSolver, DivergenceWarmStartIsHalfUnlessTheSceneSetsIt) {
     EXPECT_EQ(parseWithSolver(R"({"divergence_warm_start": 0})").world.solver.divergenceWarmStart, 0.0f);
 }
 
-TEST(SceneSolver, DifferenceFormIsOffUnlessTheSceneSetsIt) {
-    EXPECT_EQ(parseWithSolver("{}").world.solver.differenceForm, 0.0f);
+TEST(SceneSolver, DifferenceFormIsAutomaticUnlessTheSceneSetsIt) {
+    EXPECT_LT(parseWithSolver("{}").world.solver.differenceForm, 0.0f);
+    EXPECT_EQ(parseWithSolver(R"({"difference_form": 0})").world.solver.differenceForm, 0.0f);
     EXPECT_EQ(parseWithSolver(R"({"difference_form": 0.5})").world.solver.differenceForm, 0.5f);
 }
 

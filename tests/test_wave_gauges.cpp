@@ -108,4 +108,31 @@ TEST(WaveMaker, FlapIsBitIdenticalAcrossThreadCounts) {
     EXPECT_TRUE(one == three);
 }
 
+TEST(WaveNumerics, AWorldWithAWaveMakerGetsTheWaveSettingsUnlessItSetsItsOwn) {
+    WaveMakerDef paddle;
+    paddle.x = 0.1f;
+    paddle.depth = 0.2f;
+    paddle.waveHeight = 0.03f;
+    paddle.period = 0.8f;
+    // Without a wave maker the automatic settings act as off (the solvers' own defaults).
+    WorldDef still;
+    still.particleSpacing = 0.05f;
+    EXPECT_LT(World(still).def().solver.shifting, 0.0f);
+    EXPECT_LT(World(still).def().solver.differenceForm, 0.0f);
+    World flume = scenarios::waveFlume(0.03f, 1.5f, 0.2f, paddle, 0.4f, 1);
+    const SolverDef& s = flume.def().solver;
+    EXPECT_EQ(s.shifting, 0.2f);
+    EXPECT_EQ(s.differenceForm, 0.5f);
+    EXPECT_EQ(s.xsph, 0.0f);
+    EXPECT_EQ(s.momentum, 0.0f);
+    // What a scene sets stays.
+    SolverDef own;
+    own.shifting = 0.0f;
+    own.xsph = 0.01f;
+    World mine = scenarios::waveFlume(0.03f, 1.5f, 0.2f, paddle, 0.4f, 1, 4, own);
+    EXPECT_EQ(mine.def().solver.shifting, 0.0f);
+    EXPECT_EQ(mine.def().solver.xsph, 0.01f);
+    EXPECT_EQ(mine.def().solver.differenceForm, 0.5f);
+}
+
 }  // namespace

@@ -1,6 +1,8 @@
 // Linear wave theory for the wave makers: dispersion, Biesel transfer functions, spectra, ramp.
 #include <cmath>
 #include <complex>
+#include <stdexcept>
+#include <string>
 #include <vector>
 #include <numbers>
 
@@ -192,6 +194,111 @@ TEST(WaveAnalysis, DampedOscillationFitFindsFrequencyAndDecayThroughNoise) {
     EXPECT_NEAR(exact.omega, omega, 1e-6 * omega);
     EXPECT_NEAR(exact.beta, beta, 1e-5);
     EXPECT_LT(exact.rmsResidual, 1e-8);
+}
+
+}  // namespace
+
+namespace {
+
+TEST(SecondOrderGeneration, MadsenStrokeCorrectionForAPiston) {
+    // Madsen 1971 (Altomare et al. 2017 eq. 8): a₂ = H²/(32d) (3 cosh kd/sinh³ kd − 2/m₁).
+    // The flume, d = 0.25 m, T = 1.2 s, H = 0.03 m: kd = 0.9465, m₁ = 0.9323, a₂ = 0.1405 mm
+    // (evaluated independently in double precision).
+    const double d = 0.25, H = 0.03, omega = 2.0 * std::numbers::pi / 1.2;
+    const double kd = waveNumber(omega, d) * d;
+    EXPECT_NEAR(kd, 0.94647, 1e-4);
+    EXPECT_NEAR(pistonSecondOrderAmplitude(H, kd, d), 1.4051e-4, 2e-7);
+    // The correction grows without bound in shallow water (Ursell number) and changes sign in
+    // deeper water, where the bound harmonic the linear stroke lacks is small: kd = 1.373
+    // (the suite's flume) needs −0.090 mm.
+    EXPECT_NEAR(pistonSecondOrderAmplitude(0.04, 1.37292, 0.3), -8.9906e-5, 2e-7);
+    // order 2 adds the stroke's harmonic at 2ω; order 1 has none.
+    WaveMakerDef def;
+    def.depth = static_cast<float>(d);
+    def.waveHeight = static_cast<float>(H);
+    def.period = 1.2f;
+    EXPECT_EQ(paddleComponents(def).size(), 1u);
+    def.order = 2;
+    const auto c = paddleComponents(def);
+    ASSERT_EQ(c.size(), 2u);
+    EXPECT_NEAR(c[1].omega, 2.0 * c[0].omega, 1e-12);
+    EXPECT_NEAR(c[1].amplitude, pistonSecondOrderAmplitude(def.waveHeight, kd, d), 1e-9);
+}
+
+TEST(SolitaryWave, GoringStrokeFollowsTheWaterUnderTheWave) {
+    const double d = 0.25, H = 0.05;
+    const SolitaryStroke s(H, d);
+    const double kappa = std::sqrt(3.0 * H / (4.0 * d * d * d)), c = std::sqrt(g * (d + H));
+    EXPECT_NEAR(s.celerity(), c, 1e-12);
+    EXPECT_NEAR(s.stroke(), 2.0 * H / (kappa * d), 1e-12);
+    // Starts at 0 and ends a stroke further (tanh 3.8 = 0.999: 0.1 % short); the start is
+    // ~sech²(3.8 + H/d) of the peak speed, 0.24 % here (Goring's truncation).
+    EXPECT_EQ(s.at(0.0).x, 0.0);
+    EXPECT_LT(std::abs(s.at(1e-6).v), 3e-3 * c * H / (d + H));
+    EXPECT_NEAR(s.at(s.duration()).x, s.stroke(), 2e-3 * s.stroke());
+    EXPECT_EQ(s.at(s.duration() + 1.0).v, 0.0);
+    // The fastest at mid-stroke, the water's speed under the crest: c H/(d + H).
+    EXPECT_NEAR(s.at(0.5 * s.duration()).v, c * H / (d + H), 1e-9);
+    // Velocity and acceleration are the time derivatives of the displacement.
+    for (double t = 0.1; t < s.duration(); t += 0.137) {
+        const double e = 1e-5;
+        EXPECT_NEAR(s.at(t).v, (s.at(t + e).x - s.at(t - e).x) / (2.0 * e), 1e-6) << "t = " << t;
+        EXPECT_NEAR(s.at(t).a, (s.at(t + e).v - s.at(t - e).v) / (2.0 * e), 1e-4) << "t = " << t;
+    }
+}
+
+/// The message of checkWaveFitsTank for `def` in a tank `length` long at `spacing`, or "" if it fits.
+std::string refusal(const WaveMakerDef& def, float length = 4.0f, float spacing = 0.02f) {
+    try {
+        checkWaveFitsTank(def, length, spacing, g);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(WaveMakerInput, WavesTheTankOrTheSpacingCannotHoldAreRefusedByFieldAndValue) {
+    WaveMakerDef def;
+    def.depth = 0.25f;
+    def.waveHeight = 0.03f;
+    def.period = 1.2f;  // λ = 1.66 m
+    EXPECT_EQ(refusal(def), "");
+    // Too long for the tank: λ = 1.66 m in a 1.5 m tank.
+    EXPECT_NE(refusal(def, 1.5f).find("wavemaker.period: the wave is too long for the tank"), std::string::npos)
+        << refusal(def, 1.5f);
+    EXPECT_NE(refusal(def, 1.5f).find("got 1.2"), std::string::npos);
+    // Too short for the spacing: λ = 1.66 m is 8.3 spacings of 0.2 m.
+    EXPECT_NE(refusal(def, 4.0f, 0.2f).find("wavemaker.period: the wave is too short for the particle spacing"),
+              std::string::npos);
+    def.period = 0.2f;  // λ = 6.2 cm: 3 spacings of 2 cm
+    EXPECT_NE(refusal(def).find("wavemaker.period"), std::string::npos);
+    def.period = 1.2f;
+    // Too low for the spacing, too steep.
+    def.waveHeight = 0.005f;
+    EXPECT_NE(refusal(def).find("wavemaker.wave_height: the wave is too low for the particle spacing"), std::string::npos);
+    def.waveHeight = 0.3f;
+    EXPECT_NE(refusal(def).find("wavemaker.wave_height: the wave is too steep"), std::string::npos);
+    def.waveHeight = 0.03f;
+    // A spectrum is checked at its peak, under its own keys.
+    def.spectrum.type = WaveSpectrumDef::Type::Jonswap;
+    def.spectrum.significantHeight = 0.03f;
+    def.spectrum.peakPeriod = 3.0f;
+    EXPECT_NE(refusal(def).find("wavemaker.spectrum.tp"), std::string::npos) << refusal(def);
+    def.spectrum.type = WaveSpectrumDef::Type::None;
+    // Order: 1 or 2, and 2 only for a piston's regular waves.
+    def.order = 3;
+    EXPECT_NE(refusal(def).find("wavemaker.order: must be 1 or 2, got 3"), std::string::npos);
+    def.order = 2;
+    def.type = WaveMakerDef::Type::Flap;
+    EXPECT_NE(refusal(def).find("wavemaker.order: 2 is for regular waves from a piston"), std::string::npos);
+    // A solitary wave above 0.6 of the depth.
+    def.order = 1;
+    def.type = WaveMakerDef::Type::Solitary;
+    def.waveHeight = 0.2f;
+    EXPECT_NE(refusal(def).find("wavemaker.wave_height: a solitary wave must be at most 0.6 of the depth"),
+              std::string::npos);
+    def.waveHeight = 0.05f;
+    EXPECT_EQ(refusal(def), "");
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -41,7 +42,9 @@ TEST(World, RejectsBadDefinitionsNamingTheField) {
     expectRejected(with([](WorldDef& d) { d.solver.method = "sph-of-my-dreams"; }), "solver.method");
     expectRejected(with([](WorldDef& d) { d.solver.cflNumber = 3.0f; }), "solver.cflNumber");
     expectRejected(with([](WorldDef& d) { d.solver.momentum = 1.5f; }), "solver.momentum");
-    expectRejected(with([](WorldDef& d) { d.solver.shifting = -0.1f; }), "solver.shifting");
+    // Negative shifting is automatic (0.2 with a wave maker, else off); NaN is no setting.
+    expectRejected(with([](WorldDef& d) { d.solver.shifting = std::numeric_limits<float>::quiet_NaN(); }), "solver.shifting");
+    expectRejected(with([](WorldDef& d) { d.solver.shifting = 1.5f; }), "solver.shifting");
     expectRejected(with([](WorldDef& d) {
                        d.solver.method = "wcsph";
                        d.solver.shifting = 0.2f;
@@ -130,7 +133,7 @@ TEST(World, BlocksInFrontOfAWaveMakerStartAtItsFace) {
     paddle.x = 0.13f;
     paddle.depth = 0.2f;
     paddle.waveHeight = 0.02f;
-    paddle.period = 1.0f;
+    paddle.period = 0.6f;  // λ 0.56 m: the tank holds it (a longer wave is refused)
     world.addWaveMaker(paddle);
     ASSERT_EQ(world.addBlock({{paddle.x, 0.0f, 0.0f}, {1.0f, 0.2f, 0.1f}, {}, 0}), AddStatus::Added);
     float front = 1e30f;

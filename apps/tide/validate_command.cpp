@@ -167,7 +167,10 @@ int validateCommand(const std::string& file) {
             std::printf("  moving   obstacles[%zu]: %s\n", k, describeMotion(scene.obstacles[k].motion).c_str());
     for (const WaveMakerDef& wm : scene.waveMakers) {
         const char* type = wm.type == WaveMakerDef::Type::Flap ? "flap" : "piston";
-        if (wm.spectrum.type == WaveSpectrumDef::Type::None)
+        if (wm.type == WaveMakerDef::Type::Solitary)
+            std::printf("waves      solitary wave from a piston at x = %g m, depth %g m: H %g m (Goring 1978)\n", wm.x,
+                        wm.depth, wm.waveHeight);
+        else if (wm.spectrum.type == WaveSpectrumDef::Type::None)
             std::printf("waves      %s at x = %g m, depth %g m: regular, H %g m, T %g s, ramp %g s\n", type, wm.x, wm.depth,
                         wm.waveHeight, wm.period, wm.rampTime);
         else

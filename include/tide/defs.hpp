@@ -115,8 +115,9 @@ struct SolverDef {
     /// particle concentration, so the packing stays even without storing the energy the
     /// pressure's own regularisation would. Waves keep their height far longer (docs/waves.md:
     /// 0.2 took a 2 cm flume's loss at 5 wave lengths from 48 % to 22–28 %); 0 (the default)
-    /// switches it off.
-    float shifting = 0.0f;
+    /// switches it off. Negative (the default): automatic, 0.2 in a world with a wave maker
+    /// (the wave settings, docs/waves.md § Defaults), else 0.
+    float shifting = -1.0f;
     /// dfsph: the share, in [0, 1], of the pressure force's self-term on the smoothed pressure
     /// taken in the difference form. The symmetric force Σ_j m_j (κ_i/ρ_i + κ_j/ρ_j) ∇W_ij holds
     /// −(κ_i/ρ_i) Σ_j m_j ∇W_ij, which vanishes only on an even packing with a full
@@ -130,8 +131,9 @@ struct SolverDef {
     /// `shifting`, which keeps the packing even instead (docs/waves.md: 0.5 with shifting 0.2
     /// took a 2 cm flume's loss at 5 wave lengths from 22 % to 15 %). The price: still water
     /// is busier, and its pressure reads 2–7 % above ρgd (the solve makes up for the surface
-    /// push taken out). 0 (the default) switches it off.
-    float differenceForm = 0.0f;
+    /// push taken out). 0 switches it off. Negative (the default): automatic, 0.5 in a world
+    /// with a wave maker, else 0.
+    float differenceForm = -1.0f;
     /// Incompressible solvers (dfsph, pcisph) iterate until the mean compression
     /// (ρ − ρ0)/ρ0 is below this (0.001 = 0.1 %).
     float maxDensityError = 0.001f;
@@ -328,8 +330,9 @@ struct WaveSpectrumDef {
 /// wavemaker theory (Biesel transfer function, Dean & Dalrymple §6.2).
 struct WaveMakerDef {
     enum class Type {
-        Piston,  ///< translates along x
-        Flap,    ///< rotates about a hinge on the floor (y = domain min) at x
+        Piston,    ///< translates along x
+        Flap,      ///< rotates about a hinge on the floor (y = domain min) at x
+        Solitary,  ///< a piston moved once along Goring's 1978 trajectory: one solitary wave of waveHeight
     };
     Type type = Type::Piston;
     float x = 0.0f;             ///< paddle face at rest, m
@@ -338,6 +341,11 @@ struct WaveMakerDef {
     float period = 0.0f;        ///< T of regular waves, s
     float rampTime = 2.0f;      ///< s; the stroke grows as ½(1 − cos(π t/ramp)) up to this time
     WaveSpectrumDef spectrum;   ///< irregular waves instead of waveHeight/period, when its type is not None
+    /// Order of the generation theory (scene key wavemaker.order, DualSPHysics' waveorder):
+    /// 1, linear (the paddle also radiates a spurious free second harmonic), or 2, with the
+    /// second-order correction of the stroke that cancels it (Madsen 1971; regular waves from
+    /// a piston only).
+    int order = 1;
 };
 
 /// A damping zone (sponge layer): velocities of particles between `xStart` and `xEnd` are

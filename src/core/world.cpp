@@ -40,6 +40,7 @@
 #include "sources/emitter.hpp"
 #include "sources/lattice.hpp"
 #include "sources/wave_maker.hpp"
+#include "sources/wave_numerics.hpp"
 
 namespace tide {
 
@@ -73,11 +74,11 @@ void validateWorldDef(const WorldDef& d) {
         throw std::invalid_argument("solver.soundSpeed: must be >= 0 (0 = automatic), got " + show(s.soundSpeed));
     if (s.xsph >= 0.0f) requireInRange("solver.xsph", s.xsph, 0.0f, 1.0f);
     if (s.momentum >= 0.0f) requireInRange("solver.momentum", s.momentum, 0.0f, 0.95f);
-    requireInRange("solver.shifting", s.shifting, 0.0f, 1.0f);
+    if (!(s.shifting < 0.0f)) requireInRange("solver.shifting", s.shifting, 0.0f, 1.0f);
     if (s.shifting > 0.0f && s.method != "dfsph")
         throw std::invalid_argument("solver.shifting: only the dfsph solver shifts particles, got " + show(s.shifting) +
                                     " with solver \"" + s.method + "\"");
-    requireInRange("solver.differenceForm", s.differenceForm, 0.0f, 1.0f);
+    if (!(s.differenceForm < 0.0f)) requireInRange("solver.differenceForm", s.differenceForm, 0.0f, 1.0f);
     if (s.differenceForm > 0.0f && s.method != "dfsph")
         throw std::invalid_argument("solver.differenceForm: only the dfsph solver takes it, got " + show(s.differenceForm) +
                                     " with solver \"" + s.method + "\"");
@@ -928,7 +929,8 @@ std::uint32_t World::countEscapedParticles() const {
 void World::addWaveMaker(const WaveMakerDef& def) {
     Impl& w = *impl_;
     const WorldDef& d = w.def;
-    if (def.type != WaveMakerDef::Type::Piston && def.type != WaveMakerDef::Type::Flap)
+    if (def.type != WaveMakerDef::Type::Piston && def.type != WaveMakerDef::Type::Flap &&
+        def.type != WaveMakerDef::Type::Solitary)
         throw std::invalid_argument("wavemaker.type: unknown type");
     requireFinite("wavemaker.x", def.x);
     if (!(def.x > d.domainMin.x && def.x < d.domainMax.x))
@@ -941,7 +943,9 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     if (!(def.rampTime >= 0.0f) || !std::isfinite(def.rampTime))
         throw std::invalid_argument("wavemaker.ramp_time: must be >= 0, got " + show(def.rampTime));
     const WaveSpectrumDef& sp = def.spectrum;
-    if (sp.type == WaveSpectrumDef::Type::None) {
+    if (def.type == WaveMakerDef::Type::Solitary) {
+        requirePositive("wavemaker.wave_height", def.waveHeight);  // one wave: no period, no spectrum
+    } else if (sp.type == WaveSpectrumDef::Type::None) {
         requirePositive("wavemaker.wave_height", def.waveHeight);
         requirePositive("wavemaker.period", def.period);
     } else {
@@ -958,7 +962,10 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     }
     const float g = glm::length(d.gravity);
     if (!(g > 0.0f)) throw std::invalid_argument("wavemaker: needs gravity, got " + show(d.gravity));
+    checkWaveFitsTank(def, d.domainMax.x - def.x, d.particleSpacing, g);
     WaveMaker maker(def, d.domainMin.y, g);
+    // A wave tank's numerics unless the scene chose its own (docs/waves.md § Defaults).
+    applyWaveNumerics(w.def.solver);
     if (w.paddles.empty()) {
         // The fluid's lattice starts at the first paddle's face in x; the walls move onto it
         // while nothing else is there (wave makers come before obstacles and blocks).

@@ -15,6 +15,7 @@
 
 #include "core/planar.hpp"
 #include "json_error_path.hpp"
+#include "sources/wave_maker.hpp"
 
 namespace tide::io {
 
@@ -739,15 +740,17 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
 /// irregular sea (spectrum). Lengths scaled by `scale`.
 void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool domainOk) {
     const std::string path = "wavemaker";
-    if (!r.object(j, path, {"type", "x", "depth", "wave_height", "period", "ramp_time", "spectrum"})) return;
+    if (!r.object(j, path, {"type", "x", "depth", "wave_height", "period", "ramp_time", "spectrum", "order"}))
+        return;
     WaveMakerDef w;
     bool ok = true;
     if (auto type = r.string(j, "type", path, true)) {
         if (*type == "piston") w.type = WaveMakerDef::Type::Piston;
         else if (*type == "flap") w.type = WaveMakerDef::Type::Flap;
+        else if (*type == "solitary") w.type = WaveMakerDef::Type::Solitary;
         else {
-            r.fail(join(path, "type"), "must be \"piston\" or \"flap\", got \"" + *type + "\"" +
-                                           suggestion(*type, {"piston", "flap"}));
+            r.fail(join(path, "type"), "must be \"piston\", \"flap\" or \"solitary\", got \"" + *type + "\"" +
+                                           suggestion(*type, {"piston", "flap", "solitary"}));
             ok = false;
         }
     } else {
@@ -760,6 +763,10 @@ void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool dom
     if (x) w.x = static_cast<float>(*x) * scale;
     if (depth) w.depth = static_cast<float>(*depth) * scale;
     if (ramp) w.rampTime = static_cast<float>(*ramp);
+    if (auto order = r.number(j, "order", path, false, 1.0, 2.0)) {
+        if (*order != std::floor(*order)) r.fail(join(path, "order"), "must be 1 or 2, got " + show(j.at("order")));
+        w.order = static_cast<int>(*order);
+    }
     const WorldDef& world = scene.world;
     if (x && domainOk && !(w.x > world.domainMin.x && w.x < world.domainMax.x)) {
         std::ostringstream msg;
@@ -775,7 +782,17 @@ void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool dom
         ok = false;
     }
     const bool regular = j.contains("wave_height") || j.contains("period");
-    if (j.contains("spectrum")) {
+    if (w.type == WaveMakerDef::Type::Solitary) {
+        // One solitary wave of wave_height (Goring 1978): no period, no spectrum.
+        for (const char* key : {"period", "spectrum"})
+            if (j.contains(key)) {
+                r.fail(join(path, key), "a solitary wave has only a wave_height, got " + show(j.at(key)));
+                ok = false;
+            }
+        const auto height = r.number(j, "wave_height", path, true, 0.0, 1e300, true);
+        ok = ok && height;
+        if (height) w.waveHeight = static_cast<float>(*height) * scale;
+    } else if (j.contains("spectrum")) {
         if (regular) {
             r.fail(path, "give either spectrum (irregular waves) or wave_height and period (regular waves), not both");
             return;
@@ -825,6 +842,18 @@ void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool dom
         if (height && depth && w.waveHeight >= w.depth) {
             r.fail(join(path, "wave_height"), "must be below the depth " + show(j.at("depth")) + ", got " +
                                                   show(j.at("wave_height")));
+            ok = false;
+        }
+    }
+    if (ok && domainOk && glm::length(world.gravity) > 0.0f && world.particleSpacing > 0.0f) {
+        // A wave the tank or the spacing cannot hold (the World refuses it too; here so that
+        // `tide validate` does): the check's message starts with the field.
+        try {
+            checkWaveFitsTank(w, world.domainMax.x - w.x, world.particleSpacing, glm::length(world.gravity));
+        } catch (const std::invalid_argument& e) {
+            const std::string message = e.what();
+            const std::size_t colon = message.find(": ");
+            r.fail(message.substr(0, colon), colon == std::string::npos ? message : message.substr(colon + 2));
             ok = false;
         }
     }

@@ -1,6 +1,11 @@
 #include "sources/wave_maker.hpp"
 
 #include <cmath>
+#include <iomanip>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -8,10 +13,67 @@
 
 namespace tide {
 
+namespace {
+std::string show(double v) {
+    std::ostringstream out;
+    out << std::setprecision(4) << v;
+    return out.str();
+}
+}  // namespace
+
+void checkWaveFitsTank(const WaveMakerDef& def, float length, float spacing, double g) {
+    if (def.order != 1 && def.order != 2)
+        throw std::invalid_argument("wavemaker.order: must be 1 or 2, got " + std::to_string(def.order));
+    const bool regular = def.type != WaveMakerDef::Type::Solitary && def.spectrum.type == WaveSpectrumDef::Type::None;
+    if (def.order == 2 && !(regular && def.type == WaveMakerDef::Type::Piston))
+        throw std::invalid_argument("wavemaker.order: 2 is for regular waves from a piston, got 2 with " +
+                                    std::string(def.type == WaveMakerDef::Type::Flap ? "a flap" : def.type == WaveMakerDef::Type::Solitary ? "a solitary wave" : "a spectrum"));
+    const double d = def.depth;
+    if (def.type == WaveMakerDef::Type::Solitary) {
+        if (!(def.waveHeight > 0.0f)) return;  // the caller reports it
+        if (def.waveHeight > 0.6 * d)
+            throw std::invalid_argument("wavemaker.wave_height: a solitary wave must be at most 0.6 of the depth (" +
+                                        show(0.6 * d) + " m), got " + show(def.waveHeight));
+        if (def.waveHeight < kMinSpacingsPerHeight * spacing)
+            throw std::invalid_argument("wavemaker.wave_height: must be at least " + show(kMinSpacingsPerHeight) +
+                                        " particle spacings (" + show(kMinSpacingsPerHeight * spacing) + " m), got " +
+                                        show(def.waveHeight));
+        return;
+    }
+    const bool spectrum = def.spectrum.type != WaveSpectrumDef::Type::None;
+    const double period = spectrum ? def.spectrum.peakPeriod : def.period;
+    const double height = spectrum ? def.spectrum.significantHeight : def.waveHeight;
+    if (!(period > 0.0) || !(height > 0.0) || !(d > 0.0)) return;  // the caller reports them
+    const std::string periodField = spectrum ? "wavemaker.spectrum.tp" : "wavemaker.period";
+    const std::string heightField = spectrum ? "wavemaker.spectrum.hs" : "wavemaker.wave_height";
+    const double lambda = 2.0 * std::numbers::pi / waves::waveNumber(2.0 * std::numbers::pi / period, d, g);
+    const std::string what = " m (period " + show(period) + " s in " + show(d) + " m of water)";
+    if (lambda > length)
+        throw std::invalid_argument(periodField + ": the wave is too long for the tank: its length " + show(lambda) + what +
+                                    " exceeds the " + show(length) + " m in front of the paddle, got " + show(period));
+    if (lambda < kMinSpacingsPerWave * spacing)
+        throw std::invalid_argument(periodField + ": the wave is too short for the particle spacing: its length " +
+                                    show(lambda) + what + " is below " + show(kMinSpacingsPerWave) + " spacings (" +
+                                    show(kMinSpacingsPerWave * spacing) + " m), got " + show(period));
+    if (height > lambda / 7.0)
+        throw std::invalid_argument(heightField + ": the wave is too steep: above the breaking limit λ/7 = " +
+                                    show(lambda / 7.0) + " m for its length " + show(lambda) + " m, got " + show(height));
+    if (height < kMinSpacingsPerHeight * spacing)
+        throw std::invalid_argument(heightField + ": the wave is too low for the particle spacing: below " +
+                                    show(kMinSpacingsPerHeight) + " spacings (" + show(kMinSpacingsPerHeight * spacing) +
+                                    " m), got " + show(height));
+}
+
 WaveMaker::WaveMaker(const WaveMakerDef& def, float floor, double g)
-    : def_(def), hinge_(def.x, floor, 0.0f), components_(waves::paddleComponents(def, g)) {}
+    : def_(def), hinge_(def.x, floor, 0.0f), components_(waves::paddleComponents(def, g)) {
+    if (def.type == WaveMakerDef::Type::Solitary) solitary_.emplace(def.waveHeight, def.depth, g);
+}
 
 WaveMaker::Motion WaveMaker::motion(double t) const {
+    if (solitary_) {
+        const waves::SolitaryStroke::State s = solitary_->at(t);
+        return {s.x, s.v, s.a};
+    }
     double x = 0.0, v = 0.0, a = 0.0;
     for (const waves::PaddleComponent& c : components_) {
         const double phase = c.omega * t + c.phase;
@@ -26,7 +88,7 @@ WaveMaker::Motion WaveMaker::motion(double t) const {
 WaveMaker::Pose WaveMaker::pose(double t) const {
     Pose p{};
     p.m = motion(t);
-    if (def_.type == WaveMakerDef::Type::Piston) {
+    if (def_.type != WaveMakerDef::Type::Flap) {
         p.point = hinge_ + glm::vec3(static_cast<float>(p.m.x), 0.0f, 0.0f);
         p.normal = {1.0f, 0.0f, 0.0f};
     } else {
@@ -62,7 +124,7 @@ std::vector<glm::vec3> WaveMaker::sample(const glm::vec3& domainMin, const glm::
 void WaveMaker::place(double t, std::span<const glm::vec3> rest, std::span<glm::vec3> position,
                       std::span<glm::vec3> velocity, std::span<glm::vec3> acceleration) const {
     const Pose p = pose(t);
-    if (def_.type == WaveMakerDef::Type::Piston) {
+    if (def_.type != WaveMakerDef::Type::Flap) {
         const glm::vec3 shift(static_cast<float>(p.m.x), 0.0f, 0.0f);
         for (std::size_t b = 0; b < rest.size(); ++b) {
             position[b] = rest[b] + shift;

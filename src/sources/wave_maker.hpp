@@ -12,11 +12,12 @@
 /// After the step, particles that slipped behind the face (at the pose of the step's end)
 /// are put back in front of it, losing their velocity into the paddle relative to it.
 ///
-/// Piston: the face translates by X(t) along x. Flap: the paddle rotates about a hinge on the
+/// Piston (and solitary: a piston on Goring's 1978 trajectory): the face translates by X(t) along x. Flap: the paddle rotates about a hinge on the
 /// floor at the face by θ = X(t)/d (X the stroke at the still-water level; the small-angle
 /// form, as the linear theory assumes). X(t) = ramp(t) Σ_n A_n sin(ω_n t + φ_n).
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -29,6 +30,19 @@
 #include "sources/wave_theory.hpp"
 
 namespace tide {
+
+/// Throws std::invalid_argument naming the field (wavemaker.period, .wave_height, .order, ...)
+/// and its value for a wave the tank cannot hold: longer than the tank's `length` in front of
+/// the paddle (it could never run as a progressive wave), shorter than kMinSpacingsPerWave
+/// spacings or lower than kMinSpacingsPerHeight (the particles cannot resolve it), steeper
+/// than the breaking limit H/λ = 1/7 (Michell 1893) or, for a solitary wave, H/d above 0.6
+/// (Goring's trajectory is valid to about there); an order other than 1 or 2, or 2 where
+/// only the piston's regular waves have it.
+void checkWaveFitsTank(const WaveMakerDef& def, float length, float spacing, double g);
+
+/// Fewest particle spacings a wave length may span, and a wave height.
+inline constexpr double kMinSpacingsPerWave = 10.0;
+inline constexpr double kMinSpacingsPerHeight = 0.5;
 
 class WaveMaker {
 public:
@@ -72,6 +86,7 @@ private:
 
     WaveMakerDef def_;
     glm::vec3 hinge_;
+    std::optional<waves::SolitaryStroke> solitary_;
     std::vector<waves::PaddleComponent> components_;
 };
 

@@ -1,5 +1,6 @@
 #include "sources/wave_theory.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -30,6 +31,11 @@ double pistonHeightToStroke(double kd) {
 
 double flapHeightToStroke(double kd) {
     return 4.0 * (std::sinh(kd) / kd) * (kd * std::sinh(kd) - std::cosh(kd) + 1.0) / (std::sinh(2.0 * kd) + 2.0 * kd);
+}
+
+double pistonSecondOrderAmplitude(double waveHeight, double kd, double depth) {
+    const double s = std::sinh(kd);
+    return waveHeight * waveHeight / (32.0 * depth) * (3.0 * std::cosh(kd) / (s * s * s) - 2.0 / pistonHeightToStroke(kd));
 }
 
 namespace {
@@ -66,12 +72,21 @@ double JonswapSpectrum::operator()(double f) const { return scale_ * shape(f); }
 std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g) {
     const double d = def.depth;
     std::vector<PaddleComponent> out;
+    if (def.type == WaveMakerDef::Type::Solitary) return out;  // SolitaryStroke moves it
     if (def.spectrum.type == WaveSpectrumDef::Type::None) {
         PaddleComponent c;
         c.omega = 2.0 * std::numbers::pi / def.period;
         c.waveAmplitude = 0.5 * def.waveHeight;
-        c.amplitude = c.waveAmplitude / transfer(def.type, waveNumber(c.omega, d, g) * d);
+        const double kd = waveNumber(c.omega, d, g) * d;
+        c.amplitude = c.waveAmplitude / transfer(def.type, kd);
         out.push_back(c);
+        if (def.order == 2 && def.type == WaveMakerDef::Type::Piston) {
+            // Madsen 1971: the stroke's second harmonic, at 2ω and twice the phase (0 here).
+            PaddleComponent second;
+            second.omega = 2.0 * c.omega;
+            second.amplitude = pistonSecondOrderAmplitude(def.waveHeight, kd, d);
+            out.push_back(second);
+        }
         return out;
     }
     const WaveSpectrumDef& s = def.spectrum;
@@ -93,6 +108,39 @@ std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g)
         out.push_back(c);
     }
     return out;
+}
+
+SolitaryStroke::SolitaryStroke(double waveHeight, double depth, double g)
+    : h_(waveHeight), d_(depth), kappa_(std::sqrt(3.0 * waveHeight / (4.0 * depth * depth * depth))),
+      c_(std::sqrt(g * (depth + waveHeight))), amplitude_(waveHeight / (kappa_ * depth)),
+      t0_((3.8 + waveHeight / depth) / (kappa_ * c_)) {
+    origin_ = xi(0.0);
+}
+
+double SolitaryStroke::xi(double t) const {
+    // ξ = A tanh(κ(cτ − ξ)) by Newton's method: f(ξ) = ξ − A tanh(κ(cτ − ξ)) has
+    // f' = 1 + Aκ sech² > 0, so it converges from ξ = 0 (a few steps to round-off).
+    const double tau = std::clamp(t, 0.0, 2.0 * t0_) - t0_;
+    double x = 0.0;
+    for (int iteration = 0; iteration < 50; ++iteration) {
+        const double th = std::tanh(kappa_ * (c_ * tau - x));
+        const double f = x - amplitude_ * th, df = 1.0 + amplitude_ * kappa_ * (1.0 - th * th);
+        const double step = f / df;
+        x -= step;
+        if (std::abs(step) <= 1e-15 * amplitude_) break;
+    }
+    return x;
+}
+
+SolitaryStroke::State SolitaryStroke::at(double t) const {
+    const double x = xi(t);
+    if (t <= 0.0 || t >= 2.0 * t0_) return {x - origin_, 0.0, 0.0};
+    const double th = std::tanh(kappa_ * (c_ * (t - t0_) - x));
+    const double eta = h_ * (1.0 - th * th);
+    const double v = c_ * eta / (d_ + eta);
+    // dη/dt = −2η tanh(θ) κ (c − v); d/dt [cη/(d + η)] = c d η'/(d + η)².
+    const double deta = -2.0 * eta * th * kappa_ * (c_ - v);
+    return {x - origin_, v, c_ * d_ * deta / ((d_ + eta) * (d_ + eta))};
 }
 
 Ramp ramp(double t, double rampTime) {

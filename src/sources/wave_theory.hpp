@@ -49,6 +49,14 @@ private:
     double fp_, gamma_, scale_ = 1.0;
 };
 
+/// Amplitude of the second-order correction of a piston's stroke for regular waves of height
+/// H, wave number k in depth d, X₂(t) = a₂ sin(2ωt + 2φ) next to X₁ = (S/2) sin(ωt + φ):
+/// a₂ = H²/(32 d) (3 cosh kd / sinh³ kd − 2/m₁), m₁ = H/S the linear transfer function
+/// (Madsen 1971, "On the generation of long waves", JGR 76(36), as written by Altomare et al.
+/// 2017, Coastal Engineering 127, eq. 8). It cancels the free second harmonic the linear
+/// stroke radiates, leaving only Stokes' bound one.
+double pistonSecondOrderAmplitude(double waveHeight, double kd, double depth);
+
 /// The paddle components of a wave maker: one for regular waves (stroke from the transfer
 /// function of its type), or `spectrum.components` for an irregular sea. Irregular seas use
 /// the random-phase method: N equal frequency bands Δf over [fmin, fmax]·fp, a component at
@@ -57,6 +65,29 @@ private:
 /// not needed for long records); each paddle amplitude is a_n divided by the transfer function
 /// at its own k_n d (Dean & Dalrymple §6.2, superposed linearly).
 std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g = kGravity);
+
+/// A piston's trajectory for one solitary wave of height H in depth d (Goring 1978, "Tsunamis:
+/// the propagation of long waves onto a shelf", Caltech KH-R-38, eq. 2.31): the paddle moves
+/// with the water under the wave, dX/dt = c η/(d + η), η = H sech²(κ(c t − X)), which
+/// integrates to ξ = (H/(κd)) tanh(κ(c(t − t₀) − ξ)), with κ = √(3H/(4d³)) and
+/// c = √(g(d + H)) (Boussinesq's solitary wave). The stroke is 2H/(κd); it is centred on
+/// t₀ = (3.8 + H/d)/(κc), half of Goring's duration, so the paddle starts from rest at t = 0
+/// (X(0) = 0) and stops at 2t₀.
+class SolitaryStroke {
+public:
+    SolitaryStroke(double waveHeight, double depth, double g = kGravity);
+    struct State {
+        double x, v, a;  ///< displacement, m; velocity, m/s; acceleration, m/s²
+    };
+    [[nodiscard]] State at(double t) const;
+    [[nodiscard]] double stroke() const { return 2.0 * amplitude_; }
+    [[nodiscard]] double celerity() const { return c_; }
+    [[nodiscard]] double duration() const { return 2.0 * t0_; }
+
+private:
+    [[nodiscard]] double xi(double t) const;
+    double h_, d_, kappa_, c_, amplitude_, t0_, origin_ = 0.0;
+};
 
 /// The smooth start ½(1 − cos(π t/T_ramp)) and its first and second time derivatives (1, 0, 0 after T_ramp).
 struct Ramp {
