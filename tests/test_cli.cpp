@@ -107,6 +107,12 @@ std::vector<BrokenScene> brokenScenes() {
         {"body with an unknown axis", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.15, 0.1], "radius": 0.02, "dynamic": true,
             "density": 500, "constraint": {"free": ["y", "w"]}}])"),
          "obstacles[0].constraint.free[1]: unknown axis \"w\""},
+        {"mooring anchor outside the domain", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.15, 0.1], "radius": 0.02, "dynamic": true,
+            "density": 500, "moorings": [{"fairlead": [0.15, 0.13, 0.1], "anchor": [0.15, -0.1, 0.1], "length": 0.1, "stiffness": 100}]}])"),
+         "obstacles[0].moorings[0].anchor: must lie inside the domain"},
+        {"mooring without stiffness", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.15, 0.1], "radius": 0.02, "dynamic": true,
+            "density": 500, "moorings": [{"fairlead": [0.15, 0.13, 0.1], "anchor": [0.15, 0.0, 0.1], "length": 0.1}]}])"),
+         "obstacles[0].moorings[0].stiffness: missing"},
         {"body density without dynamic", smallScene(R"(, "obstacles": [{"type": "sphere", "center": [0.15, 0.15, 0.1], "radius": 0.02, "density": 500}])"),
          "obstacles[0].dynamic: must be true"},
         {"unknown solver", smallScene(R"(, "solver": {"method": "dfsph-ultra"})"), "solver.method"},
@@ -565,6 +571,28 @@ TEST(Cli, FloatingBodiesAreWrittenAsBodiesCsv) {
         return std::stod(cell);
     };
     EXPECT_NEAR(y(rows[0]) - y(rows[2]), 0.5 * 9.81 * 0.01, 0.005);
+}
+
+// A mooring line's tension is a bodies.csv column, `<line>_tension`: a crate hanging in the air
+// from a stiff line carries its weight in it.
+TEST(Cli, MooringTensionsAreWrittenToBodiesCsv) {
+    const fs::path out = scratch("moorings_out");
+    // 0.06 × 0.06 × 0.08 m at 500 kg/m³: 0.144 kg, 1.413 N; the line (10⁴ N/m, damped) stretches 0.14 mm.
+    const fs::path scene = writeScene("moorings", smallScene(R"(, "obstacles": [{"type": "box", "name": "crate", "min": [0.12, 0.12, 0.06],
+        "max": [0.18, 0.18, 0.14], "dynamic": true, "density": 500, "constraint": {"free": ["y"]},
+        "moorings": [{"name": "line", "fairlead": [0.15, 0.18, 0.1], "anchor": [0.15, 0.19, 0.1], "length": 0.01,
+                      "stiffness": 10000, "damping": 20}]}])"));
+    const Result r = run(kTide + " run " + scene.string() + " --quiet --force --out " + out.string());
+    ASSERT_EQ(r.exit, 0) << r.output;
+    std::ifstream bodies(out / "bodies.csv");
+    std::string line;
+    std::getline(bodies, line);
+    ASSERT_GE(line.size(), std::string(",line_tension").size());
+    EXPECT_EQ(line.substr(line.size() - std::string(",line_tension").size()), ",line_tension") << line;
+    std::string last;
+    while (std::getline(bodies, line)) last = line;
+    const double tension = std::stod(last.substr(last.rfind(',') + 1));
+    EXPECT_NEAR(tension, 500.0 * 0.06 * 0.06 * 0.08 * 9.81, 0.01 * 1.413) << last;
 }
 
 TEST(Cli, ShippedScenesValidate) {

@@ -59,7 +59,10 @@ void Measurements::sample(World& world, double t) {
     }
     if (const std::vector<BodyState> bodies = world.bodies(); !bodies.empty()) {
         if (bodyNames_.empty())
-            for (const BodyState& b : bodies) bodyNames_.push_back(b.name);
+            for (const BodyState& b : bodies) {
+                bodyNames_.push_back(b.name);
+                for (const BodyState::Mooring& line : b.moorings) mooringNames_.push_back(line.name);
+            }
         append(bodyRows_, t);
         for (const BodyState& b : bodies)
             for (const double value : {b.position.x, b.position.y, b.position.z, b.orientation.w, b.orientation.x,
@@ -72,6 +75,11 @@ void Measurements::sample(World& world, double t) {
                                        b.angularVelocity.z}) {
                 bodyRows_ += ',';
                 append(bodyRows_, value);
+            }
+        for (const BodyState& b : bodies)
+            for (const BodyState::Mooring& line : b.moorings) {
+                bodyRows_ += ',';
+                append(bodyRows_, line.tension);
             }
         bodyRows_ += '\n';
     }
@@ -104,6 +112,7 @@ void Measurements::write(const std::filesystem::path& dir) const {
                 for (const char* column : {"_x", "_y", "_z", "_qw", "_qx", "_qy", "_qz"}) out << ',' << name << column;
             for (const std::string& name : bodyNames_)
                 for (const char* column : {"_vx", "_vy", "_vz", "_wx", "_wy", "_wz"}) out << ',' << name << column;
+            for (const std::string& name : mooringNames_) out << ',' << name << "_tension";
             out << '\n' << bodyRows_;
         });
     if (loads_ && !solids_.empty())

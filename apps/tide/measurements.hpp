@@ -11,7 +11,7 @@
 /// obstacles' motion as OUT/bodies.csv (`time`, then per body `<name>_x,<name>_y,<name>_z`, its
 /// centre of mass, m, `<name>_qw,<name>_qx,<name>_qy,<name>_qz`, its rotation from the rest
 /// pose; then per body `<name>_vx,<name>_vy,<name>_vz,<name>_wx,<name>_wy,<name>_wz`, m/s and
-/// rad/s). Each file is written whole
+/// rad/s; then per mooring line `<line>_tension`, N). Each file is written whole
 /// and atomically (temporary file, rename): a run that stops early leaves the rows sampled
 /// so far, never half a file.
 
@@ -54,6 +54,7 @@ private:
     std::vector<std::uint32_t> solids_;  ///< forces.csv's solids, indices in World::solids()
     std::vector<std::string> solidNames_;
     std::vector<std::string> bodyNames_;  ///< bodies.csv's bodies
+    std::vector<std::string> mooringNames_;  ///< bodies.csv's mooring lines (`<line>_tension`)
     std::string gaugeRows_, probeRows_, forceRows_, bodyRows_;
 };
 

@@ -135,6 +135,10 @@ struct ContactDef {
     double stiffness = 0.0;      ///< N/m per contact point; 0: m g / (4 · 1e-3 · size)
     double dampingRatio = 1.0;   ///< of the normal spring, per point
     double friction = 0.5;       ///< Coulomb coefficient μ
+    /// The gap, m, at which surfaces touch. A body in a fluid sets it to the particle spacing:
+    /// a film thinner than one particle cannot be resolved, and the particles squeezed into it
+    /// kicked a landing box back up (World sets it; 0 for bodies alone).
+    double distance = 0.0;
 };
 
 // ---------------------------------------------------------------------------------------

@@ -234,6 +234,17 @@ struct MotionDef {
     std::vector<MotionKey> keys;     ///< Table: rows at strictly increasing times
 };
 
+/// A mooring line of a floating body: a linear spring with slack (tension k (ℓ − L) while its
+/// length ℓ exceeds L, else none) from a point of the body to a fixed anchor inside the domain.
+struct MooringLineDef {
+    std::string name;            ///< its tension's column, `<name>_tension`; default `<body>_mooring<k>`
+    glm::vec3 fairlead{0.0f};    ///< the body's point, m, in its rest pose
+    glm::vec3 anchor{0.0f};      ///< m, inside the domain
+    double length = 0.0;         ///< unstretched length L, m (> 0)
+    double stiffness = 0.0;      ///< k, N/m (> 0)
+    double damping = 0.0;        ///< N s/m along the line while taut (>= 0)
+};
+
 /// How an obstacle moves when the fluid moves it (ObstacleDef::dynamics): a rigid body of six
 /// degrees of freedom, coupled both ways (tide::bodies: exact mass properties from the shape,
 /// gravity, the fluid's load every step, contact with walls, fixed obstacles and other bodies).
@@ -247,6 +258,8 @@ struct BodyDynamicsDef {
     /// (rotations about the world axes): {"y"} heaves only, {"x", "y", "rz"} moves in the x–y
     /// plane. Empty: all six.
     std::vector<std::string> freeAxes;
+    /// Mooring lines: linear springs with slack from a point of the body to a fixed anchor.
+    std::vector<MooringLineDef> moorings;
 };
 
 /// A solid the fluid flows around, sampled as boundary particles: fixed, or moving by a

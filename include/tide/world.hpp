@@ -181,6 +181,12 @@ struct BodyState {
     glm::dvec3 velocity{0.0};            ///< of the centre of mass, m/s
     glm::dvec3 angularVelocity{0.0};     ///< rad/s
     glm::dvec3 contactForce{0.0};        ///< from walls, obstacles and other bodies, N (mean over the last step)
+    /// Each mooring line (BodyDynamicsDef::moorings, in order): its name and tension, N.
+    struct Mooring {
+        std::string name;
+        double tension = 0.0;
+    };
+    std::vector<Mooring> moorings;
 };
 
 /// What an emitter has accumulated during a run (its EmitterDef is the scene's).

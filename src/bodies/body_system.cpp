@@ -44,6 +44,7 @@ struct ContactParams {
     double friction = 0.0;
     int probesPerFace = 1;
     double dampingRatio = 1.0;
+    double distance = 0.0;  // the gap at which surfaces touch, m
 };
 
 struct Contacting {
@@ -106,13 +107,13 @@ struct BodySystem::Impl {
     // Probes of shape `a` (pose pa) against the signed distance of `b` (pose pb); the force on
     // a's probes goes to loadA (if not null), its reaction to loadB (if not null).
     static void probe(const ContactShape& a, const Contacting& pa, const ContactShape& b, const Contacting& pb,
-                      double k, double c, double mu, Load* loadA, Load* loadB, std::uint32_t idA, std::uint32_t idB,
-                      const Friction& friction) {
+                      double k, double c, double mu, double gap, Load* loadA, Load* loadB, std::uint32_t idA,
+                      std::uint32_t idB, const Friction& friction) {
         for (std::size_t ip = 0; ip < a.probes.size(); ++ip) {
             const ContactProbe& pr = a.probes[ip];
             const glm::dvec3 p = pa.toWorld(pr.point);
             glm::dvec3 n0;
-            const double d = signedDistance(b.shape, pb.toRest(p), n0) - pr.radius;
+            const double d = signedDistance(b.shape, pb.toRest(p), n0) - pr.radius - gap;
             if (!(d < 0.0)) continue;
             const glm::dvec3 n = pb.normalToWorld(n0);
             const glm::dvec3 at = p - pr.radius * n;  // on a sphere probe's surface
@@ -172,28 +173,29 @@ struct BodySystem::Impl {
                 const ContactShape& f = fixedShapes[fi];
                 const auto fid = kFixed | static_cast<std::uint32_t>(fi);
                 const bool plane = f.shape.shape == ObstacleDef::Shape::Plane;
-                if (plane ? glm::dot(ci - f.center, glm::normalize(glm::dvec3(f.shape.normal))) > si.boundingRadius
-                          : glm::length(ci - f.center) > si.boundingRadius + f.boundingRadius)
+                if (plane ? glm::dot(ci - f.center, glm::normalize(glm::dvec3(f.shape.normal))) > si.boundingRadius + pi.distance
+                          : glm::length(ci - f.center) > si.boundingRadius + f.boundingRadius + pi.distance)
                     continue;
-                probe(si, poses[i], f, still, pi.stiffness, pi.damping, pi.friction, &loads[i], nullptr, bi, fid,
-                      friction);
+                probe(si, poses[i], f, still, pi.stiffness, pi.damping, pi.friction, pi.distance, &loads[i], nullptr,
+                      bi, fid, friction);
                 if (!plane)
-                    probe(f, still, si, poses[i], pi.stiffness, pi.damping, pi.friction, nullptr, &loads[i], fid, bi,
-                          friction);
+                    probe(f, still, si, poses[i], pi.stiffness, pi.damping, pi.friction, pi.distance, nullptr,
+                          &loads[i], fid, bi, friction);
             }
             for (std::size_t j = i + 1; j < n; ++j) {
                 if (!bodies[j]->def().contact.enabled) continue;
                 const ContactShape& sj = bodyShapes[j];
-                if (glm::length(ci - poses[j].toWorld(sj.center)) > si.boundingRadius + sj.boundingRadius) continue;
                 const ContactParams& pj = params[j];
+                const double gap = std::max(pi.distance, pj.distance);
+                if (glm::length(ci - poses[j].toWorld(sj.center)) > si.boundingRadius + sj.boundingRadius + gap) continue;
                 const double k = pi.stiffness * pj.stiffness / (pi.stiffness + pj.stiffness);
                 const double mi = bodies[i]->massProperties().mass, mj = bodies[j]->massProperties().mass;
                 const double zeta = 0.5 * (pi.dampingRatio + pj.dampingRatio);
                 const double c = 2.0 * zeta * std::sqrt(k * (mi * mj / (mi + mj)) / std::min(pi.probesPerFace, pj.probesPerFace));
                 const double mu = std::sqrt(pi.friction * pj.friction);
                 const auto bj = static_cast<std::uint32_t>(j);
-                probe(si, poses[i], sj, poses[j], k, c, mu, &loads[i], &loads[j], bi, bj, friction);
-                probe(sj, poses[j], si, poses[i], k, c, mu, &loads[j], &loads[i], bj, bi, friction);
+                probe(si, poses[i], sj, poses[j], k, c, mu, gap, &loads[i], &loads[j], bi, bj, friction);
+                probe(sj, poses[j], si, poses[i], k, c, mu, gap, &loads[j], &loads[i], bj, bi, friction);
             }
         }
         if (tau > 0.0) springs = std::move(next);
@@ -294,10 +296,12 @@ std::size_t BodySystem::addBody(const BodyDef& def) {
     requireNonNegativeD(def.name + ".contact.stiffness", cd.stiffness);
     requirePositiveD(def.name + ".contact.damping_ratio", cd.dampingRatio);
     requireNonNegativeD(def.name + ".contact.friction", cd.friction);
+    requireNonNegativeD(def.name + ".contact.distance", cd.distance);
     ContactParams p;
     p.probesPerFace = shape.probesPerFace;
     p.dampingRatio = cd.dampingRatio;
     p.friction = cd.friction;
+    p.distance = cd.distance;
     const double m = body->massProperties().mass;
     const double g = glm::length(impl_->gravity) > 0.0 ? glm::length(impl_->gravity) : 9.81;
     p.stiffness = cd.stiffness > 0.0 ? cd.stiffness : m * g / (p.probesPerFace * 1e-3 * body->characteristicSize_);

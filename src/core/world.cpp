@@ -327,6 +327,18 @@ struct World::Impl {
         body.velocity = glm::dvec3(d.velocity);
         body.angularVelocity = glm::dvec3(d.angularVelocity);
         if (!d.freeAxes.empty()) body.constraint = bodies::freeAxes(d.freeAxes, "obstacle.constraint.free");
+        body.contact.distance = def.particleSpacing;  // the thinnest film the fluid resolves
+        for (std::size_t k = 0; k < d.moorings.size(); ++k) {
+            const MooringLineDef& line = d.moorings[k];
+            bodies::MooringDef m;
+            m.name = line.name.empty() ? obstacle.name + "_mooring" + std::to_string(k) : line.name;
+            m.fairlead = glm::dvec3(line.fairlead);
+            m.anchor = glm::dvec3(line.anchor);
+            m.length = line.length;
+            m.stiffness = line.stiffness;
+            m.damping = line.damping;
+            body.moorings.push_back(m);
+        }
         const std::vector<double> before = bodySystem ? bodySystem->saveState() : std::vector<double>{};
         bodyDefs.push_back(body);
         try {
@@ -868,7 +880,9 @@ std::vector<BodyState> World::bodies() const {
         const Impl::Mover& m = w.movers[mover];
         const bodies::RigidBody& b = w.bodySystem->body(static_cast<std::size_t>(m.body));
         out.push_back({m.index, w.obstacles[m.index].name, b.position(), b.orientation(), b.velocity(), b.angularVelocity(),
-                       b.contactForce()});
+                       b.contactForce(), {}});
+        for (std::size_t k = 0; k < b.def().moorings.size(); ++k)
+            out.back().moorings.push_back({b.def().moorings[k].name, b.moorings()[k].tension});
     }
     return out;
 }

@@ -542,13 +542,14 @@ std::optional<MotionDef> readMotion(Reader& r, const json& j, const std::string&
 /// velocity, angular_velocity, constraint.free) into o.dynamics; false on a problem.
 bool readBodyDynamics(Reader& r, const json& j, const std::string& path, float scale, ObstacleDef& o) {
     const bool bodyKeys = j.contains("density") || j.contains("mass") || j.contains("center_of_mass") ||
-                          j.contains("velocity") || j.contains("angular_velocity") || j.contains("constraint");
+                          j.contains("velocity") || j.contains("angular_velocity") || j.contains("constraint") ||
+                          j.contains("moorings");
     if (!j.contains("dynamic") && !bodyKeys) return true;
     const auto dynamic = r.boolean(j, "dynamic", path);
     if (j.contains("dynamic") && !dynamic) return false;
     if (!dynamic.value_or(false)) {
         if (!bodyKeys) return true;  // "dynamic": false, a fixed obstacle
-        r.fail(join(path, "dynamic"), "must be true for a body's density, mass, velocity or constraint");
+        r.fail(join(path, "dynamic"), "must be true for a body's density, mass, velocity, constraint or moorings");
         return false;
     }
     if (o.shape == ObstacleDef::Shape::Plane) {
@@ -586,6 +587,19 @@ bool readBodyDynamics(Reader& r, const json& j, const std::string& path, float s
             }
         }
     }
+    const json& moorings = r.array(j, "moorings", path, false);
+    for (std::size_t k = 0; k < moorings.size(); ++k) {
+        const std::string where = indexed(join(path, "moorings"), k);
+        if (!r.object(moorings[k], where, {"name", "fairlead", "anchor", "length", "stiffness", "damping"})) continue;
+        MooringLineDef line;
+        if (auto v = r.string(moorings[k], "name", where, false)) line.name = *v;
+        if (auto v = r.vec3(moorings[k], "fairlead", where, true)) line.fairlead = *v * scale;
+        if (auto v = r.vec3(moorings[k], "anchor", where, true)) line.anchor = *v * scale;
+        if (auto v = r.number(moorings[k], "length", where, true, 0.0, 1e6, true)) line.length = *v * scale;
+        if (auto v = r.number(moorings[k], "stiffness", where, true, 0.0, 1e12, true)) line.stiffness = *v;
+        if (auto v = r.number(moorings[k], "damping", where, false, 0.0, 1e12)) line.damping = *v;
+        body.moorings.push_back(line);
+    }
     if (r.problems.size() != before) return false;
     o.dynamics = body;
     return true;
@@ -612,11 +626,11 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         return std::nullopt;
     }
     if (*type == "box") {
-        if (!r.object(j, path, {"type", "min", "max", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "min", "max", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint", "moorings"})) return std::nullopt;
         if (!readBox(r, j, path, scale, o.min, o.max)) return std::nullopt;
         o.shape = ObstacleDef::Shape::Box;
     } else if (*type == "sphere") {
-        if (!r.object(j, path, {"type", "center", "radius", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "center", "radius", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint", "moorings"})) return std::nullopt;
         const auto c = r.vec3(j, "center", path, true);
         const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
         if (!c || !radius) return std::nullopt;
@@ -624,7 +638,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.center = *c * scale;
         o.radius = static_cast<float>(*radius) * scale;
     } else if (*type == "cylinder") {
-        if (!r.object(j, path, {"type", "center", "axis", "radius", "length", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "center", "axis", "radius", "length", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint", "moorings"})) return std::nullopt;
         const auto c = r.vec3(j, "center", path, true);
         const auto axis = readDirection(r, j, "axis", path);
         const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
@@ -662,7 +676,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         }
         o.shape = ObstacleDef::Shape::Polygon;
     } else if (*type == "plane") {
-        if (!r.object(j, path, {"type", "point", "normal", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "point", "normal", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint", "moorings"})) return std::nullopt;
         const auto point = r.vec3(j, "point", path, true);
         const auto normal = readDirection(r, j, "normal", path);
         if (!point || !normal) return std::nullopt;
@@ -670,7 +684,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.point = *point * scale;
         o.normal = *normal;
     } else if (*type == "mesh") {
-        if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "file", "scale", "rotate", "translate", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint", "moorings"})) return std::nullopt;
         const auto file = r.string(j, "file", path, true);
         MeshPlacement placement;
         const auto meshScale = readMeshScale(r, j, path);
@@ -1217,6 +1231,17 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
     for (std::size_t i = 0; i < obstacles.size(); ++i)
         if (auto o = readObstacle(r, obstacles[i], indexed("obstacles", i), scale, baseDirectory))
             scene.obstacles.push_back(std::move(*o));
+    // A mooring's anchor is fixed in the domain (the body system's walls hold it).
+    if (domainOk && scene.obstacles.size() == obstacles.size())
+        for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
+            if (!scene.obstacles[i].dynamics) continue;
+            const auto& lines = scene.obstacles[i].dynamics->moorings;
+            for (std::size_t k = 0; k < lines.size(); ++k)
+                if (!boxInside(lines[k].anchor, lines[k].anchor, scene.world))
+                    r.fail(indexed(indexed("obstacles", i) + ".moorings", k) + ".anchor",
+                           "must lie inside the domain " + showVec(scene.world.domainMin / scale) + " to " +
+                               showVec(scene.world.domainMax / scale) + ", got " + showVec(lines[k].anchor / scale));
+        }
     // Names head forces.csv's columns: one each, the unnamed ones' "obstacle<k>" included.
     for (std::size_t i = 0; i < scene.obstacles.size(); ++i) {
         const auto nameOf = [&](std::size_t k) {
