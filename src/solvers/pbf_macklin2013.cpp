@@ -255,7 +255,7 @@ double PbfMacklin2013::step(StepContext& ctx) {
         p.pressure[i] = toPressure * lambda_[i];
     });
     if (ctx.solver.vorticity > 0.0f) confineVorticity(ctx, dt, ctx.solver.vorticity);
-    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.supportRadius, ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : kDefaultXsph,
+    xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.poly6(), ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : kDefaultXsph,
                 ctx.threads);
     ctx.lap(Phase::NonPressureForces);
     ctx.pressureIterations = iterations;
