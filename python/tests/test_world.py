@@ -283,13 +283,23 @@ def test_the_floor_carries_the_waters_weight():
 
 def test_ctrl_c_stops_settle_and_leaves_a_usable_world():
     world = tide.World(small_tank(), settle=False)
-    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
-    timer.start()
+    stop = threading.Event()
+
+    def interrupt_once_settling():  # on an event (settle has stepped), not after a delay
+        while world.steps == 0 and not stop.is_set():
+            stop.wait(0.001)
+        if not stop.is_set():
+            os.kill(os.getpid(), signal.SIGINT)
+
+    watcher = threading.Thread(target=interrupt_once_settling)
     try:
         with pytest.raises(KeyboardInterrupt):
+            watcher.start()
             world.settle(seconds=1e6, speed=0.0)  # never quiet at speed 0: only Ctrl-C ends it
     finally:
-        timer.cancel()
+        stop.set()
+        watcher.join()
+    assert world.steps > 0  # it was interrupted while settling
     assert world.time == 0.0  # settling holds the clock
     world.step()
     assert world.time > 0.0 and np.isfinite(world.positions).all()
