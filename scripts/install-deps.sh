@@ -15,13 +15,15 @@ set -euo pipefail
 # LLVM's OpenMP (libomp-dev, whose Archer tool makes TSan understand OpenMP), llvm-symbolizer (llvm).
 # The Python module (`import tide`): pybind11, Python's headers, numpy; its tests: pytest; its
 # examples: matplotlib.
+# Running a scene on several processes (`mpirun -np N tide run`, src/comm/): Open MPI.
 packages=(cmake make g++ libglm-dev libkissfft-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libhwy-dev
           libopenvdb-dev libtbb-dev libimath-dev libboost-dev libgtest-dev libgmock-dev
           libbenchmark-dev python3-meshio python3-jsonschema bsdutils
           libglfw3-dev libglew-dev libimgui-dev libstb-dev libegl-dev libegl-mesa0 libglx-mesa0 libgl1-mesa-dri
           ffmpeg xvfb x11-apps
           clang libclang-rt-14-dev libomp-dev llvm
-          python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib)
+          python3-dev pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-matplotlib
+          libopenmpi-dev openmpi-bin)
 
 missing=()
 for pkg in "${packages[@]}"; do
