@@ -2,15 +2,20 @@
 // runs the same checks; the job's exit code is the same on all ranks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <numeric>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
 #include "comm/communicator.hpp"
+#include "comm/domain_split.hpp"
+#include "comm/particle_records.hpp"
 
 namespace {
 
@@ -100,6 +105,125 @@ TEST(CommMpi, GatherAndBroadcastGoThroughRankZero) {
     }
     const Bytes root = comm->broadcastFromRoot(comm->rank() == 0 ? text("from rank 0") : Bytes{});
     EXPECT_EQ(text(root), "from rank 0");
+}
+
+
+TEST(CommMpi, IntegerSumsInPlace) {
+    std::vector<std::int64_t> v{1, comm->rank(), -2};
+    comm->sumInPlace(v);
+    const std::int64_t n = comm->size();
+    EXPECT_EQ(v, (std::vector<std::int64_t>{n, n * (n - 1) / 2, -2 * n}));
+}
+
+/// 3000 particles scattered over a 1 x 0.5 x 0.6 m domain with cells of 0.1 m, the same on
+/// every rank (one seed), each with its own velocity, mass, warm starts and dye.
+tide::ParticleStore scatteredParticles() {
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    tide::ParticleStore store;
+    for (int i = 0; i < 3000; ++i) {
+        // Denser towards x = 0, so the cost-balanced boxes differ in size.
+        const glm::vec3 x(u(rng) * u(rng) * 0.999f, u(rng) * 0.499f, u(rng) * 0.599f);
+        store.append(x, glm::vec3(u(rng), -u(rng), 0.5f), 1e-3f * (1.0f + u(rng)), static_cast<tide::MaterialIndex>(i % 3),
+                     1000.0f + u(rng), u(rng));
+        store.warmKappa.back() = u(rng);
+        store.pressure.back() = 100.0f * u(rng);
+    }
+    return store;
+}
+
+/// Chebyshev distance in cells from `cell` to the box, across periodic seams.
+int cellsToBox(const std::array<int, 3>& cell, const CellBox& box, const CellGrid& grid) {
+    int worst = 0;
+    for (int a = 0; a < 3; ++a) {
+        int best = 1 << 20;
+        for (int shift : {-1, 0, 1}) {
+            if (shift != 0 && !grid.periodic[a]) continue;
+            const int c = cell[a] + shift * grid.cells[a];
+            best = std::min(best, c < box.lo[a] ? box.lo[a] - c : (c >= box.hi[a] ? c - box.hi[a] + 1 : 0));
+        }
+        worst = std::max(worst, best);
+    }
+    return worst;
+}
+
+TEST(CommMpi, MigrationAndGhostsMoveExactlyTheRightParticles) {
+    const tide::ParticleStore all = scatteredParticles();
+    for (const bool periodicX : {false, true}) {
+        SCOPED_TRACE(periodicX ? "periodic in x" : "walls");
+        const CellGrid grid{{10, 5, 6}, {periodicX, false, false}};
+        // Costs: particles per cell, each rank counting only the ones it starts with.
+        const int n = comm->size(), self = comm->rank();
+        tide::ParticleStore mine;
+        std::vector<std::uint32_t> start;
+        for (std::uint32_t i = 0; i < all.size(); ++i)
+            if (static_cast<int>(i % static_cast<std::uint32_t>(n)) == self) start.push_back(i);
+        const Bytes packed = packParticles(all, start);
+        tide::comm::appendPacked(mine, packed);
+        DomainSplit probe(grid, glm::vec3(0.0f), 0.1f, {CellBox{{0, 0, 0}, grid.cells}});
+        std::vector<std::int64_t> perCell(static_cast<std::size_t>(grid.cellCount()), 0);
+        for (std::uint32_t i = 0; i < mine.size(); ++i) ++perCell[static_cast<std::size_t>(probe.cellIndexOf(mine.position[i]))];
+        comm->sumInPlace(perCell);
+        const std::vector<std::uint64_t> cost(perCell.begin(), perCell.end());
+        const DomainSplit split(grid, glm::vec3(0.0f), 0.1f, partitionRcb(grid, cost, n));
+
+        migrate(mine, split, *comm);
+        sortByCellThenId(mine, split);
+        // Every particle is now with the owner of its cell, bit for bit as it was made.
+        for (std::uint32_t i = 0; i < mine.size(); ++i) {
+            ASSERT_EQ(split.ownerOf(split.cellOf(mine.position[i])), self);
+            const std::uint32_t id = mine.id[i];
+            EXPECT_EQ(mine.position[i], all.position[id]);
+            EXPECT_EQ(mine.velocity[i], all.velocity[id]);
+            EXPECT_EQ(mine.mass[i], all.mass[id]);
+            EXPECT_EQ(mine.warmKappa[i], all.warmKappa[id]);
+            EXPECT_EQ(mine.concentration[i], all.concentration[id]);
+            EXPECT_EQ(mine.material[i], all.material[id]);
+            if (i > 0) {
+                const auto before = split.cellIndexOf(mine.position[i - 1]), here = split.cellIndexOf(mine.position[i]);
+                EXPECT_TRUE(before < here || (before == here && mine.id[i - 1] < mine.id[i]));
+            }
+        }
+        // Nothing lost or doubled: the count, the set of ids and the mass are exact.
+        EXPECT_EQ(comm->sum(std::int64_t{mine.size()}), std::int64_t{all.size()});
+        std::vector<std::byte> idBytes(mine.size() * sizeof(std::uint32_t));
+        std::memcpy(idBytes.data(), mine.id.data(), idBytes.size());
+        const std::vector<Bytes> ids = comm->gatherToRoot(idBytes);
+        if (self == 0) {
+            std::vector<std::uint32_t> seen;
+            for (const Bytes& b : ids) {
+                const std::size_t k = seen.size();
+                seen.resize(k + b.size() / sizeof(std::uint32_t));
+                std::memcpy(seen.data() + k, b.data(), b.size());
+            }
+            std::sort(seen.begin(), seen.end());
+            std::vector<std::uint32_t> expected(all.size());
+            std::iota(expected.begin(), expected.end(), 0u);
+            EXPECT_EQ(seen, expected);
+        }
+        ExactSum massHere, massAll;
+        for (const float m : mine.mass) massHere.add(m);
+        for (const float m : all.mass) massAll.add(m);
+        EXPECT_EQ(comm->sum(massHere).value(), massAll.value());
+
+        // Ghosts: exactly the other ranks' particles within one cell of this rank's box.
+        const std::uint32_t owned = mine.size();
+        const std::uint32_t ghosts = appendGhosts(mine, split, *comm);
+        ASSERT_EQ(mine.size(), owned + ghosts);
+        std::set<std::uint32_t> expected;
+        for (std::uint32_t i = 0; i < all.size(); ++i) {
+            const auto cell = split.cellOf(all.position[i]);
+            if (split.ownerOf(cell) != self && cellsToBox(cell, split.boxes()[static_cast<std::size_t>(self)], grid) <= 1)
+                expected.insert(i);
+        }
+        const std::set<std::uint32_t> got(mine.id.begin() + owned, mine.id.end());
+        EXPECT_EQ(got.size(), ghosts) << "a ghost arrived twice";
+        EXPECT_EQ(got, expected);
+        for (std::uint32_t i = owned; i < mine.size(); ++i) EXPECT_EQ(mine.position[i], all.position[mine.id[i]]);
+        if (n == 1) {
+            EXPECT_EQ(ghosts, 0u);
+        }
+    }
 }
 
 }  // namespace

@@ -53,12 +53,39 @@ public:
     void retain(std::span<const std::uint8_t> keep);
     /// Drop every particle.
     void clear();
+    /// Calls f(array) for every per-particle array above, in this fixed order: the one list
+    /// of the fields (reserve, retain, permute, clear and the records sent to other
+    /// processes walk it), so a new field is added here and in `append`.
+    template <class F>
+    void forEachArray(F&& f) {
+        visitArrays(*this, f);
+    }
+    template <class F>
+    void forEachArray(F&& f) const {
+        visitArrays(*this, f);
+    }
+
     /// The id the next appended particle gets.
     [[nodiscard]] std::uint32_t nextId() const { return nextId_; }
     /// Continue numbering at `next` (restoring a saved store; must exceed every id in it).
     void setNextId(std::uint32_t next) { nextId_ = next; }
 
 private:
+    template <class Self, class F>
+    static void visitArrays(Self& self, F& f) {
+        f(self.position);
+        f(self.velocity);
+        f(self.acceleration);
+        f(self.density);
+        f(self.pressure);
+        f(self.mass);
+        f(self.warmKappa);
+        f(self.warmDivergence);
+        f(self.material);
+        f(self.concentration);
+        f(self.id);
+    }
+
     std::uint32_t nextId_ = 0;
 };
 

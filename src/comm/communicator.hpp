@@ -42,6 +42,9 @@ public:
     /// The exact sum of every rank's accumulator, the same on every rank (ExactSum::value
     /// then gives the same double whatever the number of ranks).
     virtual ExactSum sum(const ExactSum& local) = 0;
+    /// Element-wise sums of integers over all ranks, in place (e.g. particles per cell, for
+    /// the partitioner's costs).
+    virtual void sumInPlace(std::span<std::int64_t> values) = 0;
 
     /// Each rank sends `outgoing` (at most one message per destination, none to itself) and
     /// receives what the others sent it, sorted by source rank. Collective: every rank calls

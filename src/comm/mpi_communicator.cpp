@@ -74,6 +74,12 @@ public:
         return ExactSum::fromCounters(all);
     }
 
+    void sumInPlace(std::span<std::int64_t> values) override {
+        if (values.size() > static_cast<std::size_t>(INT_MAX))
+            throw std::length_error("mpi communicator: a sum of " + std::to_string(values.size()) + " values");
+        MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_INT64_T, MPI_SUM, MPI_COMM_WORLD);
+    }
+
     std::vector<Message> exchange(std::vector<Message> outgoing) override {
         std::vector<long long> sendBytes(static_cast<std::size_t>(size_), 0), recvBytes(static_cast<std::size_t>(size_), 0);
         for (const Message& m : outgoing) {

@@ -15,6 +15,7 @@ public:
     double min(double local) override { return local; }
     std::int64_t sum(std::int64_t local) override { return local; }
     ExactSum sum(const ExactSum& local) override { return local; }
+    void sumInPlace(std::span<std::int64_t>) override {}
     std::vector<Message> exchange(std::vector<Message> outgoing) override {
         if (!outgoing.empty())
             throw std::invalid_argument("serial communicator: a message to rank " +

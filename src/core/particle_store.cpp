@@ -6,17 +6,7 @@
 namespace tide {
 
 void ParticleStore::reserve(std::uint32_t n) {
-    position.reserve(n);
-    velocity.reserve(n);
-    acceleration.reserve(n);
-    density.reserve(n);
-    pressure.reserve(n);
-    mass.reserve(n);
-    warmKappa.reserve(n);
-    warmDivergence.reserve(n);
-    material.reserve(n);
-    concentration.reserve(n);
-    id.reserve(n);
+    forEachArray([n](auto& values) { values.reserve(n); });
 }
 
 void ParticleStore::makeRoomFor(std::uint32_t more) {
@@ -74,47 +64,17 @@ void retainIn(std::vector<T>& values, std::span<const std::uint8_t> keep) {
 
 void ParticleStore::retain(std::span<const std::uint8_t> keep) {
     assert(keep.size() == size());
-    retainIn(position, keep);
-    retainIn(velocity, keep);
-    retainIn(acceleration, keep);
-    retainIn(density, keep);
-    retainIn(pressure, keep);
-    retainIn(mass, keep);
-    retainIn(warmKappa, keep);
-    retainIn(warmDivergence, keep);
-    retainIn(concentration, keep);
-    retainIn(material, keep);
-    retainIn(id, keep);
+    forEachArray([keep](auto& values) { retainIn(values, keep); });
 }
 
 void ParticleStore::permute(std::span<const std::uint32_t> order) {
     assert(order.size() == size());
     std::vector<bool> placed;
-    permuteInPlace(position, order, placed);
-    permuteInPlace(velocity, order, placed);
-    permuteInPlace(acceleration, order, placed);
-    permuteInPlace(density, order, placed);
-    permuteInPlace(pressure, order, placed);
-    permuteInPlace(mass, order, placed);
-    permuteInPlace(warmKappa, order, placed);
-    permuteInPlace(warmDivergence, order, placed);
-    permuteInPlace(concentration, order, placed);
-    permuteInPlace(material, order, placed);
-    permuteInPlace(id, order, placed);
+    forEachArray([&](auto& values) { permuteInPlace(values, order, placed); });
 }
 
 void ParticleStore::clear() {
-    position.clear();
-    velocity.clear();
-    acceleration.clear();
-    density.clear();
-    pressure.clear();
-    mass.clear();
-    warmKappa.clear();
-    warmDivergence.clear();
-    material.clear();
-    concentration.clear();
-    id.clear();
+    forEachArray([](auto& values) { values.clear(); });
     nextId_ = 0;
 }
 

@@ -1,0 +1,66 @@
+#pragma once
+/// \file
+/// A run split among ranks: the global cell grid laid over the domain, the box of cells each
+/// rank owns (`partitionRcb`), and the two particle movements between ranks that a step
+/// needs: migration (a particle goes to the rank owning its cell) and ghosts (copies of the
+/// particles within one cell of another rank's box, appended after the owned ones).
+/// Cells are one kernel support wide, so the ghosts are every particle a rank's own particles
+/// can see. On periodic axes the ring wraps and ghosts keep their positions: the solvers'
+/// nearest-image pair vector (PeriodicBox) finds them across the seam, as it does in one process.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include <tide/particles.hpp>
+
+#include "comm/communicator.hpp"
+#include "comm/partition_rcb.hpp"
+
+namespace tide::comm {
+
+class DomainSplit {
+public:
+    /// `origin` is the grid's lower corner, `cellSize` its cells' width (one kernel support).
+    DomainSplit(const CellGrid& grid, const glm::vec3& origin, float cellSize, std::vector<CellBox> boxes);
+
+    [[nodiscard]] const CellGrid& grid() const { return grid_; }
+    [[nodiscard]] const std::vector<CellBox>& boxes() const { return boxes_; }
+    [[nodiscard]] int ranks() const { return static_cast<int>(boxes_.size()); }
+
+    /// The cell holding x: wrapped on periodic axes, clamped into the grid on the others
+    /// (a particle a wall has not yet pushed back stays with the cell at the edge).
+    [[nodiscard]] std::array<int, 3> cellOf(const glm::vec3& x) const;
+    /// Index of that cell in the global grid (x fastest): the order particles are kept in.
+    [[nodiscard]] std::int64_t cellIndexOf(const glm::vec3& x) const;
+    [[nodiscard]] int ownerOf(const std::array<int, 3>& cell) const;
+    /// True when `cell` lies in rank r's box grown by one cell (wrapping on periodic axes).
+    [[nodiscard]] bool inRing(int r, const std::array<int, 3>& cell) const;
+    /// Ranks other than r whose boxes touch r's box grown by one cell, ascending.
+    [[nodiscard]] const std::vector<int>& neighbours(int r) const { return neighbours_[static_cast<std::size_t>(r)]; }
+
+private:
+    CellGrid grid_;
+    glm::vec3 origin_;
+    float cellSize_;
+    std::vector<CellBox> boxes_;
+    std::vector<std::vector<int>> neighbours_;
+};
+
+/// Sends every particle of `store` whose cell another rank owns to that rank, keeps the rest
+/// (in their order) and appends what arrives, by source rank. Collective. The store must hold
+/// no ghosts.
+void migrate(ParticleStore& store, const DomainSplit& split, Communicator& comm);
+
+/// Orders the store by global cell index, then by id, so that each particle meets its
+/// neighbours in the same order whichever rank holds it.
+void sortByCellThenId(ParticleStore& store, const DomainSplit& split);
+
+/// Appends after the store's particles (all owned) copies of the other ranks' particles
+/// within one cell of this rank's box, by source rank, each source's in its own order.
+/// Returns how many. Collective.
+std::uint32_t appendGhosts(ParticleStore& store, const DomainSplit& split, Communicator& comm);
+
+}  // namespace tide::comm
