@@ -212,32 +212,26 @@ std::uintptr_t address(const World& w, const std::string& name) {
     throw py::value_error("name: not a particle array, got \"" + name + "\"");
 }
 
+/// An (n, width) float64 array with entry (i, k) = value(i, k).
+template <class Value>
+py::array_t<double> table(std::size_t n, py::ssize_t width, Value value) {
+    py::array_t<double> out({static_cast<py::ssize_t>(n), width});
+    auto o = out.mutable_unchecked<2>();
+    for (py::ssize_t i = 0; i < static_cast<py::ssize_t>(n); ++i)
+        for (py::ssize_t k = 0; k < width; ++k) o(i, k) = value(static_cast<std::size_t>(i), static_cast<int>(k));
+    return out;
+}
+
 /// Loads on the solids (World::solids order) as numpy: names and (s, 3) float64 arrays, N and N·m.
 py::dict loadsDict(const World& w, const std::vector<SolidLoad>& loads) {
-    const auto n = static_cast<py::ssize_t>(loads.size());
-    py::array_t<double> pressure({n, py::ssize_t{3}}), viscous({n, py::ssize_t{3}}), force({n, py::ssize_t{3}}),
-        moment({n, py::ssize_t{3}});
-    auto p = pressure.mutable_unchecked<2>();
-    auto v = viscous.mutable_unchecked<2>();
-    auto f = force.mutable_unchecked<2>();
-    auto m = moment.mutable_unchecked<2>();
-    for (py::ssize_t i = 0; i < n; ++i) {
-        const SolidLoad& l = loads[static_cast<std::size_t>(i)];
-        for (int c = 0; c < 3; ++c) {
-            p(i, c) = l.pressureForce[c];
-            v(i, c) = l.viscousForce[c];
-            f(i, c) = l.force()[c];
-            m(i, c) = l.moment[c];
-        }
-    }
     std::vector<std::string> names;
     for (const SolidInfo& s : w.solids()) names.push_back(s.name);
     py::dict d;
     d["names"] = names;
-    d["force"] = force;
-    d["pressure_force"] = pressure;
-    d["viscous_force"] = viscous;
-    d["moment"] = moment;
+    d["force"] = table(loads.size(), 3, [&](std::size_t i, int c) { return loads[i].force()[c]; });
+    d["pressure_force"] = table(loads.size(), 3, [&](std::size_t i, int c) { return loads[i].pressureForce[c]; });
+    d["viscous_force"] = table(loads.size(), 3, [&](std::size_t i, int c) { return loads[i].viscousForce[c]; });
+    d["moment"] = table(loads.size(), 3, [&](std::size_t i, int c) { return loads[i].moment[c]; });
     return d;
 }
 
@@ -245,31 +239,22 @@ py::dict loadsDict(const World& w, const std::vector<SolidLoad>& loads) {
 /// float64 arrays, as bodies.csv writes them.
 py::dict bodiesDict(const World& w) {
     const std::vector<BodyState> bodies = w.bodies();
-    const auto n = static_cast<py::ssize_t>(bodies.size());
-    py::array_t<double> position({n, py::ssize_t{3}}), orientation({n, py::ssize_t{4}}), velocity({n, py::ssize_t{3}}),
-        angular({n, py::ssize_t{3}}), contact({n, py::ssize_t{3}});
-    auto x = position.mutable_unchecked<2>();
-    auto q = orientation.mutable_unchecked<2>();
-    auto v = velocity.mutable_unchecked<2>();
-    auto a = angular.mutable_unchecked<2>();
-    auto c = contact.mutable_unchecked<2>();
+    const std::size_t n = bodies.size();
     std::vector<std::string> names;
     std::vector<std::uint32_t> obstacles;
-    for (py::ssize_t i = 0; i < n; ++i) {
-        const BodyState& b = bodies[static_cast<std::size_t>(i)];
+    for (const BodyState& b : bodies) {
         names.push_back(b.name);
         obstacles.push_back(b.obstacle);
-        for (int k = 0; k < 3; ++k) {
-            x(i, k) = b.position[k];
-            v(i, k) = b.velocity[k];
-            a(i, k) = b.angularVelocity[k];
-            c(i, k) = b.contactForce[k];
-        }
-        q(i, 0) = b.orientation.w;
-        q(i, 1) = b.orientation.x;
-        q(i, 2) = b.orientation.y;
-        q(i, 3) = b.orientation.z;
     }
+    const auto position = table(n, 3, [&](std::size_t i, int k) { return bodies[i].position[k]; });
+    const auto velocity = table(n, 3, [&](std::size_t i, int k) { return bodies[i].velocity[k]; });
+    const auto angular = table(n, 3, [&](std::size_t i, int k) { return bodies[i].angularVelocity[k]; });
+    const auto contact = table(n, 3, [&](std::size_t i, int k) { return bodies[i].contactForce[k]; });
+    // (w, x, y, z), as bodies.csv.
+    const auto orientation = table(n, 4, [&](std::size_t i, int k) {
+        const auto& q = bodies[i].orientation;
+        return k == 0 ? q.w : (k == 1 ? q.x : (k == 2 ? q.y : q.z));
+    });
     py::dict d;
     d["names"] = names;
     d["obstacles"] = obstacles;
