@@ -222,6 +222,21 @@ TEST(Cli, BadFlagsExitTwo) {
         EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
 }
 
+// Started by mpirun on several ranks, every rank would run the whole scene into the same folder:
+// refused (exit 2 from each rank) before anything is written. The launcher's variable alone
+// stands in for mpirun here.
+TEST(Cli, SeveralMpiRanksAreRefusedUntilTheStepIsSplit) {
+    const fs::path scene = writeScene("mpi_ranks", smallScene());
+    const fs::path out = scratch("mpi_ranks_out");
+    const Result r = run("OMPI_COMM_WORLD_SIZE=3 " + kTide + " run " + scene.string() + " --quiet --out " + out.string());
+    EXPECT_EQ(r.exit, 2) << r.output;
+    EXPECT_NE(r.output.find("one of 3 MPI ranks"), std::string::npos) << r.output;
+    EXPECT_FALSE(fs::exists(out));
+    // One rank is a plain run.
+    const Result one = run("OMPI_COMM_WORLD_SIZE=1 " + kTide + " validate " + scene.string());
+    EXPECT_EQ(one.exit, 0) << one.output;
+}
+
 // An end time short of frame 1 would simulate nothing: refused by name before the output folder
 // is touched. One between two frames runs to the frame before it (frame k lands on k/fps) and
 // says so; before, both ran silently (0.05 s at 10 fps: 0 steps, exit 0).

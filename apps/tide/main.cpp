@@ -1,6 +1,9 @@
 // `tide`: run, validate and export SPH fluid scenes from the command line.
 #include <CLI/CLI.hpp>
 
+#include <iostream>
+
+#include "comm/communicator.hpp"
 #include "commands.hpp"
 
 int main(int argc, char** argv) {
@@ -70,6 +73,13 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         app.exit(e);
+        return kExitBadInput;
+    }
+    // Every rank of `mpirun -np N tide run` would run the whole scene and write the same files.
+    if ((*runApp || *renderApp) && tide::comm::launcherRankCount() > 1) {
+        std::cerr << "tide: started as one of " << tide::comm::launcherRankCount()
+                  << " MPI ranks; this version steps a scene in one process (splitting it among ranks is\n"
+                     "  not built yet: docs/architecture.md, Processes). Run it without mpirun.\n";
         return kExitBadInput;
     }
     if (*runApp) return runCommand(run);

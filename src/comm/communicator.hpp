@@ -72,8 +72,8 @@ bool mpiBuilt();
 /// when tide was built without MPI.
 std::unique_ptr<Communicator> makeMpiCommunicator(int* argc, char*** argv);
 
-/// True when this process was started by an MPI launcher (mpirun/mpiexec set the rank in
-/// the environment), so a program can pick MPI only when it has peers.
-bool launchedByMpi();
+/// The number of processes an MPI launcher (mpirun/mpiexec, Slurm) started this one among, as
+/// it tells them in the environment: 1 for a process started on its own.
+int launcherRankCount();
 
 }  // namespace tide::comm

@@ -34,11 +34,14 @@ public:
 
 std::unique_ptr<Communicator> makeSerialCommunicator() { return std::make_unique<SerialCommunicator>(); }
 
-bool launchedByMpi() {
-    // Open MPI, MPICH/Hydra and Slurm's PMI set one of these in every rank they start.
-    for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_RANK"})
-        if (std::getenv(variable) != nullptr) return true;
-    return false;
+int launcherRankCount() {
+    // Open MPI, MPICH/Hydra and Slurm's PMI each set one of these in every rank they start.
+    for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "SLURM_NTASKS"})
+        if (const char* value = std::getenv(variable)) {
+            const int n = std::atoi(value);
+            if (n > 0) return n;
+        }
+    return 1;
 }
 
 #ifndef TIDE_WITH_MPI
