@@ -208,7 +208,8 @@ TEST(CommMpi, MigrationAndGhostsMoveExactlyTheRightParticles) {
 
         // Ghosts: exactly the other ranks' particles within one cell of this rank's box.
         const std::uint32_t owned = mine.size();
-        const std::uint32_t ghosts = appendGhosts(mine, split, *comm);
+        HaloPlan plan = appendGhosts(mine, split, *comm);
+        const std::uint32_t ghosts = plan.ghostCount();
         ASSERT_EQ(mine.size(), owned + ghosts);
         std::set<std::uint32_t> expected;
         for (std::uint32_t i = 0; i < all.size(); ++i) {
@@ -222,6 +223,23 @@ TEST(CommMpi, MigrationAndGhostsMoveExactlyTheRightParticles) {
         for (std::uint32_t i = owned; i < mine.size(); ++i) EXPECT_EQ(mine.position[i], all.position[mine.id[i]]);
         if (n == 1) {
             EXPECT_EQ(ghosts, 0u);
+        }
+
+        // Sorted again with the ghosts among the owned particles, as a step orders them, the
+        // plan follows; a refresh then copies each owner's new values onto its ghosts.
+        plan.follow(sortByCellThenId(mine, split));
+        std::vector<std::uint8_t> isGhost(mine.size(), 0);
+        for (const auto& link : plan.links())
+            for (const std::uint32_t i : link.receive) isGhost[i] = 1;
+        for (std::uint32_t i = 0; i < mine.size(); ++i) {
+            mine.pressure[i] = isGhost[i] ? -1.0f : 0.5f * static_cast<float>(mine.id[i]);
+            mine.velocity[i] = isGhost[i] ? glm::vec3(-1.0f) : glm::vec3(static_cast<float>(mine.id[i]), 1.0f, 2.0f);
+        }
+        plan.refresh(std::span<float>(mine.pressure), *comm);
+        plan.refresh(std::span<glm::vec3>(mine.velocity), *comm);
+        for (std::uint32_t i = 0; i < mine.size(); ++i) {
+            EXPECT_EQ(mine.pressure[i], 0.5f * static_cast<float>(mine.id[i])) << (isGhost[i] ? "ghost " : "owned ") << i;
+            EXPECT_EQ(mine.velocity[i].x, static_cast<float>(mine.id[i]));
         }
     }
 }

@@ -76,7 +76,7 @@ TEST(DomainSplit, OneRankKeepsEverythingInCellThenIdOrder) {
     }
     // One rank has no other rank to take ghosts from (periodic images come from the pair
     // vector's nearest image, not from copies).
-    EXPECT_EQ(appendGhosts(store, split, *serial), 0u);
+    EXPECT_EQ(appendGhosts(store, split, *serial).ghostCount(), 0u);
     // Outside the grid: wrapped on the periodic axis, clamped on the others.
     EXPECT_EQ(split.cellOf({-0.05f, 7.0f, -1.0f}), (std::array<int, 3>{9, 4, 0}));
 }

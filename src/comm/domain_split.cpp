@@ -92,7 +92,7 @@ void migrate(ParticleStore& store, const DomainSplit& split, Communicator& comm)
     for (const Message& m : comm.exchange(std::move(outgoing))) appendPacked(store, m.bytes);
 }
 
-void sortByCellThenId(ParticleStore& store, const DomainSplit& split) {
+std::vector<std::uint32_t> sortByCellThenId(ParticleStore& store, const DomainSplit& split) {
     std::vector<std::int64_t> cell(store.size());
     for (std::uint32_t i = 0; i < store.size(); ++i) cell[i] = split.cellIndexOf(store.position[i]);
     std::vector<std::uint32_t> order(store.size());
@@ -101,9 +101,31 @@ void sortByCellThenId(ParticleStore& store, const DomainSplit& split) {
         return cell[a] != cell[b] ? cell[a] < cell[b] : store.id[a] < store.id[b];
     });
     store.permute(order);
+    return order;
 }
 
-std::uint32_t appendGhosts(ParticleStore& store, const DomainSplit& split, Communicator& comm) {
+std::uint32_t HaloPlan::ghostCount() const {
+    std::size_t n = 0;
+    for (const Link& link : links_) n += link.receive.size();
+    return static_cast<std::uint32_t>(n);
+}
+
+HaloPlan::Link& HaloPlan::linkTo(int rank) {
+    auto at = std::lower_bound(links_.begin(), links_.end(), rank, [](const Link& l, int r) { return l.rank < r; });
+    if (at == links_.end() || at->rank != rank) at = links_.insert(at, Link{rank, {}, {}});
+    return *at;
+}
+
+void HaloPlan::follow(std::span<const std::uint32_t> order) {
+    std::vector<std::uint32_t> newIndex(order.size());
+    for (std::uint32_t k = 0; k < order.size(); ++k) newIndex[order[k]] = k;
+    for (Link& link : links_) {
+        for (std::uint32_t& i : link.send) i = newIndex[i];
+        for (std::uint32_t& i : link.receive) i = newIndex[i];
+    }
+}
+
+HaloPlan appendGhosts(ParticleStore& store, const DomainSplit& split, Communicator& comm) {
     const int self = comm.rank();
     const std::vector<int>& candidates = split.neighbours(self);
     std::vector<std::vector<std::uint32_t>> toSend(candidates.size());
@@ -112,12 +134,20 @@ std::uint32_t appendGhosts(ParticleStore& store, const DomainSplit& split, Commu
         for (std::size_t k = 0; k < candidates.size(); ++k)
             if (split.inRing(candidates[k], cell)) toSend[k].push_back(i);
     }
+    HaloPlan plan;
     std::vector<Message> outgoing;
-    for (std::size_t k = 0; k < candidates.size(); ++k)
-        if (!toSend[k].empty()) outgoing.push_back({candidates[k], packParticles(store, toSend[k])});
-    std::uint32_t ghosts = 0;
-    for (const Message& m : comm.exchange(std::move(outgoing))) ghosts += appendPacked(store, m.bytes);
-    return ghosts;
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+        if (toSend[k].empty()) continue;
+        outgoing.push_back({candidates[k], packParticles(store, toSend[k])});
+        plan.linkTo(candidates[k]).send = std::move(toSend[k]);
+    }
+    for (const Message& m : comm.exchange(std::move(outgoing))) {
+        const std::uint32_t first = store.size();
+        const std::uint32_t count = appendPacked(store, m.bytes);
+        std::vector<std::uint32_t>& receive = plan.linkTo(m.rank).receive;
+        for (std::uint32_t k = 0; k < count; ++k) receive.push_back(first + k);
+    }
+    return plan;
 }
 
 }  // namespace tide::comm

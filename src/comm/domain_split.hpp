@@ -8,8 +8,14 @@
 /// can see. On periodic axes the ring wraps and ghosts keep their positions: the solvers'
 /// nearest-image pair vector (PeriodicBox) finds them across the seam, as it does in one process.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <cstring>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -55,12 +61,60 @@ private:
 void migrate(ParticleStore& store, const DomainSplit& split, Communicator& comm);
 
 /// Orders the store by global cell index, then by id, so that each particle meets its
-/// neighbours in the same order whichever rank holds it.
-void sortByCellThenId(ParticleStore& store, const DomainSplit& split);
+/// neighbours in the same order whichever rank holds it. Returns the permutation applied
+/// (new[k] = old[order[k]]), for a HaloPlan to follow.
+std::vector<std::uint32_t> sortByCellThenId(ParticleStore& store, const DomainSplit& split);
+
+/// Where the copies of particles go between ranks: per neighbouring rank, which of this
+/// rank's particles it holds ghosts of (`send`) and where its particles' ghosts sit here
+/// (`receive`), both in the order of the ghost exchange, so a field is refreshed on the
+/// ghosts by sending just its values.
+class HaloPlan {
+public:
+    struct Link {
+        int rank = 0;
+        std::vector<std::uint32_t> send;
+        std::vector<std::uint32_t> receive;
+    };
+
+    [[nodiscard]] const std::vector<Link>& links() const { return links_; }
+    [[nodiscard]] std::uint32_t ghostCount() const;
+    /// After the store was permuted (new[k] = old[order[k]]): the indices follow their particles.
+    void follow(std::span<const std::uint32_t> order);
+    /// Copies each sent particle's value of `field` (one entry per particle of the store) into
+    /// its ghosts on the other ranks. Collective.
+    template <class T>
+    void refresh(std::span<T> field, Communicator& comm) const;
+
+private:
+    friend HaloPlan appendGhosts(ParticleStore&, const DomainSplit&, Communicator&);
+    Link& linkTo(int rank);
+    std::vector<Link> links_;  ///< ascending rank
+};
 
 /// Appends after the store's particles (all owned) copies of the other ranks' particles
-/// within one cell of this rank's box, by source rank, each source's in its own order.
-/// Returns how many. Collective.
-std::uint32_t appendGhosts(ParticleStore& store, const DomainSplit& split, Communicator& comm);
+/// within one cell of this rank's box, by source rank, each source's in its own order, and
+/// returns the plan that refreshes them. Collective.
+HaloPlan appendGhosts(ParticleStore& store, const DomainSplit& split, Communicator& comm);
+
+template <class T>
+void HaloPlan::refresh(std::span<T> field, Communicator& comm) const {
+    static_assert(std::is_trivially_copyable_v<T>);
+    std::vector<Message> outgoing;
+    for (const Link& link : links_) {
+        if (link.send.empty()) continue;
+        Bytes bytes(link.send.size() * sizeof(T));
+        for (std::size_t k = 0; k < link.send.size(); ++k) std::memcpy(bytes.data() + k * sizeof(T), &field[link.send[k]], sizeof(T));
+        outgoing.push_back({link.rank, std::move(bytes)});
+    }
+    for (const Message& m : comm.exchange(std::move(outgoing))) {
+        const auto link = std::find_if(links_.begin(), links_.end(), [&](const Link& l) { return l.rank == m.rank; });
+        if (link == links_.end() || m.bytes.size() != link->receive.size() * sizeof(T))
+            throw std::logic_error("halo refresh: " + std::to_string(m.bytes.size()) + " bytes from rank " +
+                                   std::to_string(m.rank) + " that this rank holds no such ghosts of");
+        for (std::size_t k = 0; k < link->receive.size(); ++k)
+            std::memcpy(&field[link->receive[k]], m.bytes.data() + k * sizeof(T), sizeof(T));
+    }
+}
 
 }  // namespace tide::comm
