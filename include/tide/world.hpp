@@ -20,6 +20,9 @@
 #include <tide/particles.hpp>
 
 namespace tide {
+namespace comm {
+class Communicator;
+}
 
 /// Why addBlock() added nothing.
 enum class AddStatus {
@@ -378,8 +381,12 @@ public:
     /// the mismatch and leaves the World unchanged.
     void restoreState(WorldState state);
 
+    struct Impl;  ///< the state (src/core/world_impl.hpp)
+
 private:
-    struct Impl;
+    // A run split among processes (src/core/world_distributed.hpp) reaches into the state.
+    friend void distributeWorld(World& world, comm::Communicator& comm);
+    friend ParticleStore gatherOwnedParticles(const World& world, comm::Communicator& comm);
     std::unique_ptr<Impl> impl_;
 };
 

@@ -22,9 +22,12 @@ int intervalDistance(int blo, int bhi, int clo, int chi) { return std::max({0, c
 
 }  // namespace
 
-DomainSplit::DomainSplit(const CellGrid& grid, const glm::vec3& origin, float cellSize, std::vector<CellBox> boxes)
-    : grid_(grid), origin_(origin), cellSize_(cellSize), boxes_(std::move(boxes)), neighbours_(boxes_.size()) {
+DomainSplit::DomainSplit(const CellGrid& grid, const glm::vec3& origin, float cellSize, std::vector<CellBox> boxes,
+                         int ghostCells)
+    : grid_(grid), origin_(origin), cellSize_(cellSize), boxes_(std::move(boxes)), ghostCells_(ghostCells),
+      neighbours_(boxes_.size()) {
     if (!(cellSize > 0.0f)) throw std::invalid_argument("domain split: cell size must be positive, got " + std::to_string(cellSize));
+    if (ghostCells < 1) throw std::invalid_argument("domain split: ghost depth must be at least 1 cell, got " + std::to_string(ghostCells));
     for (std::size_t r = 0; r < boxes_.size(); ++r)
         for (std::size_t o = 0; o < boxes_.size(); ++o) {
             bool touch = o != r;
@@ -35,7 +38,7 @@ DomainSplit::DomainSplit(const CellGrid& grid, const glm::vec3& origin, float ce
                 if (grid_.periodic[a])
                     distance = std::min({distance, intervalDistance(b.lo[a], b.hi[a], c.lo[a] - n, c.hi[a] - n),
                                          intervalDistance(b.lo[a], b.hi[a], c.lo[a] + n, c.hi[a] + n)});
-                touch = distance <= 1;
+                touch = distance <= ghostCells_;
             }
             if (touch) neighbours_[r].push_back(static_cast<int>(o));
         }
@@ -70,7 +73,7 @@ int DomainSplit::ownerOf(const std::array<int, 3>& cell) const {
 bool DomainSplit::inRing(int r, const std::array<int, 3>& cell) const {
     const CellBox& b = boxes_[static_cast<std::size_t>(r)];
     for (int a = 0; a < 3; ++a)
-        if (gapTo(cell[a], b.lo[a], b.hi[a], grid_.cells[a], grid_.periodic[a]) > 1) return false;
+        if (gapTo(cell[a], b.lo[a], b.hi[a], grid_.cells[a], grid_.periodic[a]) > ghostCells_) return false;
     return true;
 }
 

@@ -29,8 +29,12 @@ namespace tide::comm {
 
 class DomainSplit {
 public:
-    /// `origin` is the grid's lower corner, `cellSize` its cells' width (one kernel support).
-    DomainSplit(const CellGrid& grid, const glm::vec3& origin, float cellSize, std::vector<CellBox> boxes);
+    /// `origin` is the grid's lower corner, `cellSize` its cells' width (one kernel support),
+    /// `ghostCells` the depth of the ghost ring in cells (2 where walls take the pressure of
+    /// the fluid around them: a wall particle within h of an owned particle sums fluid up to
+    /// 2h from it).
+    DomainSplit(const CellGrid& grid, const glm::vec3& origin, float cellSize, std::vector<CellBox> boxes,
+                int ghostCells = 1);
 
     [[nodiscard]] const CellGrid& grid() const { return grid_; }
     [[nodiscard]] const std::vector<CellBox>& boxes() const { return boxes_; }
@@ -42,9 +46,10 @@ public:
     /// Index of that cell in the global grid (x fastest): the order particles are kept in.
     [[nodiscard]] std::int64_t cellIndexOf(const glm::vec3& x) const;
     [[nodiscard]] int ownerOf(const std::array<int, 3>& cell) const;
-    /// True when `cell` lies in rank r's box grown by one cell (wrapping on periodic axes).
+    /// True when `cell` lies in rank r's box grown by the ghost depth (wrapping on periodic axes).
     [[nodiscard]] bool inRing(int r, const std::array<int, 3>& cell) const;
-    /// Ranks other than r whose boxes touch r's box grown by one cell, ascending.
+    [[nodiscard]] int ghostCells() const { return ghostCells_; }
+    /// Ranks other than r whose boxes touch r's box grown by the ghost depth, ascending.
     [[nodiscard]] const std::vector<int>& neighbours(int r) const { return neighbours_[static_cast<std::size_t>(r)]; }
 
 private:
@@ -52,6 +57,7 @@ private:
     glm::vec3 origin_;
     float cellSize_;
     std::vector<CellBox> boxes_;
+    int ghostCells_;
     std::vector<std::vector<int>> neighbours_;
 };
 
@@ -93,7 +99,7 @@ private:
 };
 
 /// Appends after the store's particles (all owned) copies of the other ranks' particles
-/// within one cell of this rank's box, by source rank, each source's in its own order, and
+/// within the ghost depth of this rank's box, by source rank, each source's in its own order, and
 /// returns the plan that refreshes them. Collective.
 HaloPlan appendGhosts(ParticleStore& store, const DomainSplit& split, Communicator& comm);
 

@@ -11,6 +11,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -26,6 +27,7 @@
 #include "boundary/obstacles.hpp"
 #include "boundary/rigid_motion.hpp"
 #include "boundary/wall_box.hpp"
+#include "comm/exact_sum.hpp"
 #include "core/divergence_guard.hpp"
 #include "core/field_sampling.hpp"
 #include "core/kernels.hpp"
@@ -54,6 +56,19 @@ namespace tide {
 /// a lattice particle of mass ρ0 / this sum has exactly the rest density inside a filled
 /// block, so blocks start at rest. (About ρ0 s³, in 2D ρ0 s² per metre of width.)
 float latticeKernelSum(DensityKernel kernel, KernelShape shape, float spacing, float h, int dimensions);
+
+struct WorldDistribution;  // core/world_distributed.hpp
+/// Before the neighbour search of a split run: ghosts dropped, particles migrated to their
+/// owners, new ghosts, the (cell, id) order; returns the grid's anchor.
+const glm::vec3* exchangeParticles(World::Impl& w);
+/// The split run's solver hooks.
+const StepSharing* stepSharing(const World::Impl& w);
+/// Whether particle i is a ghost (a copy of another rank's particle).
+bool isGhost(const World::Impl& w, std::uint32_t i);
+/// Σ over ranks of a sum each rank took exactly (statistics of a split run).
+double sumOverRanks(const World::Impl& w, const comm::ExactSum& local);
+std::uint64_t ownedOverRanks(const World::Impl& w);
+double maxOverRanks(const World::Impl& w, double local);
 
 struct World::Impl {
     WorldDef def;
@@ -496,9 +511,14 @@ struct World::Impl {
         soundSpeed = 10.0f * reference;
     }
 
+    /// A run split among processes (core/world_distributed.hpp), or null.
+    std::shared_ptr<WorldDistribution> distribution;
+
     void rebuildNeighbors() {
-        grid.build(particles.position, h, threads, periodic);
-        if (def.reorderInterval > 0 && ++stepsSinceReorder >= def.reorderInterval) {
+        const glm::vec3* anchor = distribution ? exchangeParticles(*this) : nullptr;
+        grid.build(particles.position, h, threads, periodic, anchor);
+        // A split run keeps the (cell, id) order every step instead.
+        if (!anchor && def.reorderInterval > 0 && ++stepsSinceReorder >= def.reorderInterval) {
             // One permutation for every array: particles of a cell become contiguous in memory.
             const auto order = grid.sortedParticles();
             particles.permute(std::vector<std::uint32_t>(order.begin(), order.end()));
@@ -553,8 +573,10 @@ struct World::Impl {
         // so the sums and the guard's first bad particle do not depend on the thread count.
         struct Block {
             double errorSum = 0.0, compressionSum = 0.0, maxSpeed2 = 0.0;
+            comm::ExactSum exactError, exactCompression;  // a split run's: they must not depend on the split
             std::optional<Divergence> found;
         };
+        const bool split = distribution != nullptr;
         constexpr std::uint32_t kBlock = kReductionBlock;
         const std::uint32_t count = particles.size();
         const std::uint32_t blockCount = (count + kBlock - 1) / kBlock;
@@ -564,10 +586,15 @@ struct World::Impl {
             Block& block = blocks[b];
             DivergenceGuard guard(dt, h);
             for (std::uint32_t i = b * kBlock; i < std::min(count, (b + 1) * kBlock); ++i) {
+                if (split && isGhost(*this, i)) continue;
                 const double rho0 = materials[particles.material[i]].restDensity;
                 const double error = (particles.density[i] - rho0) / rho0;
                 block.errorSum += std::abs(error);
                 block.compressionSum += std::max(error, 0.0);
+                if (split) {
+                    block.exactError.add(std::abs(error));
+                    block.exactCompression.add(std::max(error, 0.0));
+                }
                 const double speed2 = glm::dot(particles.velocity[i], particles.velocity[i]);
                 block.maxSpeed2 = std::max(block.maxSpeed2, speed2);
                 guard.check(particles, i, speed2);
@@ -575,14 +602,23 @@ struct World::Impl {
             block.found = guard.found();
         }
         double errorSum = 0.0, compressionSum = 0.0, maxSpeed2 = 0.0;
+        comm::ExactSum exactError, exactCompression;
         std::optional<Divergence> found;
         for (const Block& block : blocks) {
             errorSum += block.errorSum;
             compressionSum += block.compressionSum;
+            exactError.merge(block.exactError);
+            exactCompression.merge(block.exactCompression);
             maxSpeed2 = std::max(maxSpeed2, block.maxSpeed2);
             if (!found) found = block.found;
         }
-        const double n = std::max<double>(1.0, particles.size());
+        double n = std::max<double>(1.0, particles.size());
+        if (split) {
+            errorSum = sumOverRanks(*this, exactError);
+            compressionSum = sumOverRanks(*this, exactCompression);
+            maxSpeed2 = maxOverRanks(*this, maxSpeed2);
+            n = std::max<double>(1.0, static_cast<double>(ownedOverRanks(*this)));
+        }
         stats.meanDensityError = static_cast<float>(errorSum / n);
         stats.meanCompression = static_cast<float>(compressionSum / n);
         stats.maxSpeed = static_cast<float>(std::sqrt(maxSpeed2));

@@ -24,6 +24,7 @@ double World::Impl::step(double maxDt, Clock clockMode) {
                     w.def.particleSpacing, w.soundSpeed, w.boundary, w.boundaryNeighbors, w.boundaryFluidNeighbors,
                     w.boundaryNearFluid, w.periodic, w.viscosity, w.threads, maxDt};
     ctx.dimensions = w.def.dimensions;
+    if (w.distribution) ctx.sharing = stepSharing(w);
     ctx.clock = &clock;
     w.pairTables.build(w.materials.size(), w.pairs);
     ctx.pairs = &w.pairTables;

@@ -35,7 +35,7 @@ void finiteBounds(std::span<const glm::vec3> positions, int threads, glm::vec3& 
 }  // namespace
 
 void UniformGrid::build(std::span<const glm::vec3> positions, float minCellSize, int threads,
-                        const PeriodicBox& periodic) {
+                        const PeriodicBox& periodic, const glm::vec3* anchor) {
     const auto n = static_cast<std::uint32_t>(positions.size());
     periodic_ = periodic;
     glm::vec3 lo(0.0f), hi(0.0f);
@@ -45,7 +45,7 @@ void UniformGrid::build(std::span<const glm::vec3> positions, float minCellSize,
             lo[axis] = periodic.min[axis];
             hi[axis] = periodic.max[axis];
         }
-    const glm::vec3 extent = hi - lo;
+    glm::vec3 extent = hi - lo;
     const double maxCells = 8.0 * n + 4096.0;
     double cell = minCellSize;
     // Cells along an axis: enough to hold the extent's far end, or exactly tiling a period.
@@ -54,12 +54,28 @@ void UniformGrid::build(std::span<const glm::vec3> positions, float minCellSize,
         return periodic.periodic(axis) ? std::max(1.0, cells) : cells + 1.0;
     };
     auto cellsFor = [&](double edge) { return cellsAlong(0, edge) * cellsAlong(1, edge) * cellsAlong(2, edge); };
-    while (cellsFor(cell) > maxCells) cell *= 1.5;
+    if (!anchor)
+        while (cellsFor(cell) > maxCells) cell *= 1.5;
     cellSize_ = static_cast<float>(cell);
     invCellSize_ = 1.0f / cellSize_;
+    anchor_ = lo;
+    anchorCells_ = glm::vec3(0.0f);
+    if (anchor)
+        for (int axis = 0; axis < 3; ++axis) {
+            if (periodic.periodic(axis)) continue;  // the period is the same on every process
+            // The origin moves down to the anchor's lattice; hi stays covered (one cell more).
+            anchorCells_[axis] = std::floor((lo[axis] - (*anchor)[axis]) * invCellSize_);
+            anchor_[axis] = (*anchor)[axis];
+            lo[axis] = anchor_[axis] + anchorCells_[axis] * cellSize_;
+        }
     origin_ = lo;
+    extent = hi - lo;
     dims_ = glm::ivec3(static_cast<int>(cellsAlong(0, cell)), static_cast<int>(cellsAlong(1, cell)),
                        static_cast<int>(cellsAlong(2, cell)));
+    if (anchor)  // the far end's cell by cellOf's own arithmetic: no point is clamped into a neighbour
+        for (int axis = 0; axis < 3; ++axis)
+            if (!periodic.periodic(axis))
+                dims_[axis] = static_cast<int>(std::floor((hi[axis] - anchor_[axis]) * invCellSize_ - anchorCells_[axis])) + 1;
     const auto cells = static_cast<std::uint32_t>(dims_.x) * static_cast<std::uint32_t>(dims_.y) *
                        static_cast<std::uint32_t>(dims_.z);
 

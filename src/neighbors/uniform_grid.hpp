@@ -29,7 +29,11 @@ public:
     /// box would need more than ~8 cells per particle, so a stray particle far away costs
     /// memory proportional to the particle count, never to the distance.
     /// On the periodic axes of `periodic` the grid covers the period instead of the points.
-    void build(std::span<const glm::vec3> positions, float minCellSize, int threads, const PeriodicBox& periodic = {});
+    /// With an `anchor` (a run split among processes), the cell edge is minCellSize exactly
+    /// and cell boundaries lie at anchor + k·edge, computed from the anchor, so every process
+    /// bins a point into the same global cell and visits neighbours in the same order.
+    void build(std::span<const glm::vec3> positions, float minCellSize, int threads, const PeriodicBox& periodic = {},
+               const glm::vec3* anchor = nullptr);
 
     [[nodiscard]] float cellSize() const { return cellSize_; }
     /// Whether no particle was binned.
@@ -40,7 +44,7 @@ public:
     [[nodiscard]] const PeriodicBox& periodic() const { return periodic_; }
     /// Cell coordinates of a point, clamped into the grid (non-finite input maps to a border cell).
     [[nodiscard]] glm::ivec3 cellOf(const glm::vec3& x) const {
-        const glm::vec3 c = (x - origin_) * invCellSize_;
+        const glm::vec3 c = (x - anchor_) * invCellSize_ - anchorCells_;
         return {clampCoord(c.x, dims_.x), clampCoord(c.y, dims_.y), clampCoord(c.z, dims_.z)};
     }
     [[nodiscard]] std::uint32_t cellIndex(const glm::ivec3& c) const {
@@ -126,6 +130,8 @@ private:
     PeriodicBox periodic_;
     glm::vec3 origin_{0.0f};
     float cellSize_ = 1.0f;
+    glm::vec3 anchor_{0.0f};       ///< cells are counted from here (the origin, unless anchored)
+    glm::vec3 anchorCells_{0.0f};  ///< whole cells from the anchor to the origin
     float invCellSize_ = 1.0f;
     glm::ivec3 dims_{1, 1, 1};
     std::vector<std::uint32_t> cellStart_{0, 0};

@@ -24,6 +24,19 @@
 
 namespace tide {
 
+/// What a solver needs when its World is split among processes (src/core/world_distributed.hpp):
+/// the particles it holds include ghost copies of other ranks' particles, whose fields it
+/// computed from an incomplete neighbourhood. Before a loop reads a field it computed from
+/// neighbours, it refreshes the ghosts' copy from their owners; maxima are taken over every
+/// rank (including fresh ghosts in a max is harmless: they are copies).
+class StepSharing {
+public:
+    virtual ~StepSharing() = default;
+    virtual void refreshGhosts(std::span<float> field) const = 0;
+    virtual void refreshGhosts(std::span<glm::vec3> field) const = 0;
+    [[nodiscard]] virtual float maxOverRanks(float local) const = 0;
+};
+
 /// Everything a solver sees during one step.
 struct StepContext {
     ParticleStore& particles;
@@ -62,6 +75,15 @@ struct StepContext {
     const glm::vec4* viscosityRows = nullptr;
     /// The world's dimension (WorldDef::dimensions): 2 normalises the kernels per area.
     int dimensions = 3;
+    /// A World split among processes, or null: one process (then the two below do nothing).
+    const StepSharing* sharing = nullptr;
+    void refreshGhosts(std::span<float> field) const {
+        if (sharing) sharing->refreshGhosts(field);
+    }
+    void refreshGhosts(std::span<glm::vec3> field) const {
+        if (sharing) sharing->refreshGhosts(field);
+    }
+    [[nodiscard]] float maxOverRanks(float local) const { return sharing ? sharing->maxOverRanks(local) : local; }
 
     /// x_a − x_b to the nearest periodic image: every pair vector of a solver, fluid–fluid
     /// and fluid–boundary, goes through this (the plain difference without periodic axes).

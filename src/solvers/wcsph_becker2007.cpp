@@ -25,6 +25,7 @@ double WcsphBecker2007::step(StepContext& ctx) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) { positionMass_[i] = glm::vec4(p.position[i], p.mass[i]); });
     }
     sph::computeDensities(ctx, lanes ? positionMass_.data() : nullptr);
+    ctx.refreshGhosts(std::span<float>(p.density));  // pressure, κ and the forces read neighbours' densities
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         p.pressure[i] = pressureFromDensity(EquationOfState::Tait, p.density[i], ctx.materials[p.material[i]].restDensity,
                                             ctx.soundSpeed, true);
@@ -85,10 +86,12 @@ double WcsphBecker2007::step(StepContext& ctx) {
         p.acceleration[i] = accel_[i] - sum;
     });
     ctx.lap(Phase::PressureSolve);
-    const float maxAccel = std::sqrt(parallelMax(n, ctx.threads, [&](std::uint32_t i) {
+    // Ghosts then move as their owners do, so XSPH reads the neighbours' true new velocities.
+    ctx.refreshGhosts(std::span<glm::vec3>(p.acceleration));
+    const float maxAccel = ctx.maxOverRanks(std::sqrt(parallelMax(n, ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.acceleration[i], p.acceleration[i]);
-    }, 0.0f));
-    const double dt = stableTimeStep(ctx.solver, ctx.particleSpacing, ctx.soundSpeed, sph::maxSpeed(ctx), maxAccel,
+    }, 0.0f)));
+    const double dt = stableTimeStep(ctx.solver, ctx.particleSpacing, ctx.soundSpeed, ctx.maxOverRanks(sph::maxSpeed(ctx)), maxAccel,
                                      sph::maxKinematicViscosity(ctx),
                                      ctx.maxDt);
     const auto dtf = static_cast<float>(dt);
