@@ -34,6 +34,7 @@
 #include <utility>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <tide/ocean.hpp>
@@ -54,6 +55,9 @@ inline constexpr double kBufferSpacings = 3.0;
 /// many spacings apart and levels half as far (its error against the direct sum:
 /// OceanZones.TheLatticeHoldsTheDirectSumsWhereParticlesReadIt).
 inline constexpr double kLatticeSpacings = 1.0;
+/// The lattice is summed exactly at knots in time this many to the shortest component's
+/// period, and blended between them (SeaLattice::blend) at every step.
+inline constexpr double kKnotsPerPeriod = 8.0;
 
 /// Where the near field is: its faces (the planes the walls would stand on), its floor, still
 /// water and lattice.
@@ -132,6 +136,7 @@ private:
     NearField near_;
     std::vector<OceanSide> sides_;
     unsigned openFaces_ = 0;
+    glm::dvec2 faceLow_{0.0}, faceHigh_{0.0};  // (x, z) of the open faces; ∓inf where closed
     double width_ = 0.0;
     double rampTime_ = 0.0;
     double tau0_ = 0.0;
@@ -142,6 +147,8 @@ private:
     std::vector<glm::vec3> heldVelocity_;
     std::vector<std::pair<std::int64_t, glm::vec3>> binned_;  // scratch of refill
     std::optional<SeaLattice> lattice_;  // the far field for the bands, at the last time asked
+    std::vector<SeaLattice> knots_;      // two exact lattices at knots in time, with rates
+    double knotStep_ = 1.0;
 };
 
 }  // namespace tide::ocean

@@ -91,7 +91,7 @@ SeaLattice::SeaLattice(const Sea& sea, LatticeSpec spec)
     velocity_.assign(active_.size() * static_cast<std::size_t>(levelCount_) * 3, 0.0f);
 }
 
-void SeaLattice::update(double t, int threads) {
+void SeaLattice::update(double t, int threads, bool rates) {
     const std::size_t n = components_, levels = static_cast<std::size_t>(levelCount_);
     // e^{i(φ − ωt)} once per component.
     std::vector<double> turnCos(n), turnSin(n);
@@ -99,16 +99,23 @@ void SeaLattice::update(double t, int threads) {
         turnCos[c] = std::cos(phase_[c] - omega_[c] * t);
         turnSin[c] = std::sin(phase_[c] - omega_[c] * t);
     }
+    if (rates && elevationRate_.size() != elevation_.size()) {
+        elevationRate_.assign(elevation_.size(), 0.0f);
+        velocityRate_.assign(velocity_.size(), 0.0f);
+    }
     parallelFor(static_cast<std::uint32_t>(active_.size()), threads, [&](std::uint32_t a) {
         const std::size_t column = active_[a];
         const std::size_t i = column % static_cast<std::size_t>(spec_.columnsX), j = column / static_cast<std::size_t>(spec_.columnsX);
         // In float (as stored; four lanes of SSE): 48 terms of a sum lose ~1e-6 of it.
         thread_local std::vector<float> sums;
-        sums.assign(3 * levels, 0.0f);
+        sums.assign(6 * levels, 0.0f);
         float* ux = sums.data();
         float* uy = ux + levels;
         float* uz = uy + levels;
-        double eta = 0.0;
+        float* rx = uz + levels;  // ∂/∂t: d cos θ/dt = ω sin θ, d sin θ/dt = −ω cos θ
+        float* ry = rx + levels;
+        float* rz = ry + levels;
+        double eta = 0.0, etaRate = 0.0;
         for (std::size_t c = 0; c < n; ++c) {
             // e^{iθ} = e^{i kx x} e^{i kz z} e^{i(φ − ωt)}.
             const double xc = cosX_[i * n + c], xs = sinX_[i * n + c], zc = cosZ_[j * n + c], zs = sinZ_[j * n + c];
@@ -119,6 +126,13 @@ void SeaLattice::update(double t, int threads) {
             accumulate(ux, &profileX_[c * levels], cf, levels);
             accumulate(uz, &profileZ_[c * levels], cf, levels);
             accumulate(uy, &profileY_[c * levels], sf, levels);
+            if (rates) {
+                const auto wc = static_cast<float>(omega_[c] * cosTheta), ws = static_cast<float>(omega_[c] * sinTheta);
+                etaRate += amplitude_[c] * omega_[c] * sinTheta;
+                accumulate(rx, &profileX_[c * levels], ws, levels);
+                accumulate(rz, &profileZ_[c * levels], ws, levels);
+                accumulate(ry, &profileY_[c * levels], -wc, levels);
+            }
         }
         elevation_[a] = static_cast<float>(eta);
         float* out = &velocity_[a * levels * 3];
@@ -127,7 +141,36 @@ void SeaLattice::update(double t, int threads) {
             out[3 * l + 1] = uy[l];
             out[3 * l + 2] = uz[l];
         }
+        if (!rates) return;
+        elevationRate_[a] = static_cast<float>(etaRate);
+        float* outRate = &velocityRate_[a * levels * 3];
+        for (std::size_t l = 0; l < levels; ++l) {
+            outRate[3 * l] = rx[l];
+            outRate[3 * l + 1] = ry[l];
+            outRate[3 * l + 2] = rz[l];
+        }
     });
+    time_ = t;
+}
+
+void SeaLattice::blend(const SeaLattice& a, const SeaLattice& b, double t, int threads) {
+    const double span = b.time_ - a.time_;
+    if (!(span > 0.0) || a.elevationRate_.size() != elevation_.size() || b.elevationRate_.size() != elevation_.size() ||
+        a.velocity_.size() != velocity_.size() || b.velocity_.size() != velocity_.size() ||
+        !(t >= a.time_ && t <= b.time_))
+        throw std::invalid_argument("ocean::SeaLattice::blend: needs two lattices of this spec updated with rates at ta < tb, "
+                                    "and ta <= t <= tb");
+    // Cubic Hermite basis at s = (t − ta)/(tb − ta).
+    const double s = (t - a.time_) / span, s2 = s * s, s3 = s2 * s;
+    const auto h00 = static_cast<float>(2.0 * s3 - 3.0 * s2 + 1.0), h01 = static_cast<float>(-2.0 * s3 + 3.0 * s2);
+    const auto h10 = static_cast<float>((s3 - 2.0 * s2 + s) * span), h11 = static_cast<float>((s3 - s2) * span);
+    const auto mix = [&](std::vector<float>& out, const std::vector<float>& fa, const std::vector<float>& ra,
+                         const std::vector<float>& fb, const std::vector<float>& rb) {
+        parallelFor(static_cast<std::uint32_t>(out.size()), threads,
+                    [&](std::uint32_t i) { out[i] = h00 * fa[i] + h10 * ra[i] + h01 * fb[i] + h11 * rb[i]; });
+    };
+    mix(elevation_, a.elevation_, a.elevationRate_, b.elevation_, b.elevationRate_);
+    mix(velocity_, a.velocity_, a.velocityRate_, b.velocity_, b.velocityRate_);
     time_ = t;
 }
 
@@ -169,19 +212,19 @@ glm::dvec3 SeaLattice::velocity(const glm::dvec3& point) const {
     double wy[4];
     catmullRom(u - cell, wy);
     const std::size_t levels = static_cast<std::size_t>(levelCount_);
-    // The 4 levels × 3 components of a column are 12 consecutive floats: one weighted sum of
-    // 12-vectors per column (in float, as stored), reduced to 3 components at the end.
-    float vertical[12], sum[12] = {};
-    for (int l = 0; l < 4; ++l) vertical[3 * l] = vertical[3 * l + 1] = vertical[3 * l + 2] = static_cast<float>(wy[l]);
+    // The 4 levels × 3 components of a column are 12 consecutive floats: the horizontal
+    // weighted sum of those 12-vectors (in float, as stored), then the vertical weights.
+    float sum[12] = {};
     for (int b = 0; b < 4; ++b)
         for (int a = 0; a < 4; ++a) {
             if (slots[b][a] < 0) continue;
             const auto w = static_cast<float>(sz.w[b] * sx.w[a]);
             const float* node = &velocity_[(static_cast<std::size_t>(slots[b][a]) * levels + static_cast<std::size_t>(cell - 1)) * 3];
-            for (int e = 0; e < 12; ++e) sum[e] += w * vertical[e] * node[e];
+            for (int e = 0; e < 12; ++e) sum[e] += w * node[e];
         }
-    return {double{sum[0]} + sum[3] + sum[6] + sum[9], double{sum[1]} + sum[4] + sum[7] + sum[10],
-            double{sum[2]} + sum[5] + sum[8] + sum[11]};
+    glm::dvec3 v(0.0);
+    for (int l = 0; l < 4; ++l) v += wy[l] * glm::dvec3(sum[3 * l], sum[3 * l + 1], sum[3 * l + 2]);
+    return v;
 }
 
 }  // namespace tide::ocean

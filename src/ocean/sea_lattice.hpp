@@ -47,8 +47,13 @@ public:
     SeaLattice(const Sea& sea, LatticeSpec spec);
 
     /// Evaluates every used column at time t (parallelFor on `threads`: the same values for
-    /// any count).
-    void update(double t, int threads = 1);
+    /// any count); with `rates`, also the fields' time derivatives (for blend()).
+    void update(double t, int threads = 1, bool rates = false);
+    /// The fields at time t between two lattices of the same spec updated with rates at
+    /// ta < tb (t in [ta, tb]), by the cubic Hermite interpolant in time: an update's sums over
+    /// every component every few steps, and this cheap pass at every step. Its error for a
+    /// component of frequency ω is about (ω (tb − ta))⁴/384 of its amplitude.
+    void blend(const SeaLattice& a, const SeaLattice& b, double t, int threads = 1);
     /// The time of the last update (NaN before the first).
     [[nodiscard]] double time() const { return time_; }
     [[nodiscard]] const LatticeSpec& spec() const { return spec_; }
@@ -87,6 +92,7 @@ private:
     // contiguous: a particle's stencil reads 16 runs of 12 floats (float: the interpolation's
     // error is far above float's rounding).
     std::vector<float> elevation_, velocity_;
+    std::vector<float> elevationRate_, velocityRate_;  // ∂/∂t, after update(t, _, true)
     double time_;
 };
 
