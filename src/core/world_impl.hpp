@@ -162,7 +162,7 @@ struct World::Impl {
         stats.oceanRemoved += zones->removeOutflow(particles);
         stats.oceanAdded += zones->refill(particles, end, massOf(oceanMaterial), oceanMaterial,
                                           materials[oceanMaterial].restDensity, def.capacity,
-                                          [&](const glm::vec3& x) { return roomFor(x, Fill::Block); });
+                                          [&](const glm::vec3& x) { return roomFor(x, Fill::Block); }, threads);
     }
     /// Loads: the solids (six wall faces, then paddles and obstacles as added; their index is
     /// BoundaryParticles::solid), each obstacle's reference point at rest, the pair forces of

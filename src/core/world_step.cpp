@@ -33,10 +33,17 @@ double World::Impl::step(double maxDt, Clock clockMode) {
         w.wallLoads.reset(w.boundaryNeighbors.slotCount());
         ctx.loads = &w.wallLoads;
     }
-    if (w.zones) w.zones->holdBegin(w.particles);
+    if (w.zones) {
+        w.zones->holdBegin(w.particles);
+        clock.lap(Phase::Coupling);
+    }
     const double dt = w.solver->step(ctx);
     // An ocean's buffers move with the far field, whatever the pressure did to them.
-    if (w.zones) w.zones->holdEnd(w.particles, w.time, dt, held, w.threads);
+    if (w.zones) {
+        clock.lap(Phase::Integration);
+        w.zones->holdEnd(w.particles, w.time, dt, held, w.threads);
+        clock.lap(Phase::Coupling);
+    }
     if (loads) w.sumLoads(dt);
     // Bodies move over the step under its load (weak coupling: the fluid saw them where they
     // were at its start); the strays are then pushed out of them where they end.

@@ -29,15 +29,19 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
+#include <utility>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <tide/ocean.hpp>
 #include <tide/particles.hpp>
 
 #include "ocean/sea.hpp"
+#include "ocean/sea_lattice.hpp"
 
 namespace tide::ocean {
 
@@ -47,6 +51,13 @@ inline constexpr double kRelaxationSteps = 200.0;
 /// The kinematic buffer along an open face, in spacings (1.5 kernel supports at a support
 /// of 2 spacings: the water inside sees full, moving neighbours).
 inline constexpr double kBufferSpacings = 3.0;
+/// The far field reaches the particles of the bands through a SeaLattice with columns this
+/// many spacings apart and levels half as far (its error against the direct sum:
+/// OceanZones.TheLatticeHoldsTheDirectSumsWhereParticlesReadIt).
+inline constexpr double kLatticeSpacings = 1.0;
+/// The lattice is summed exactly at knots in time this many to the shortest component's
+/// period, and blended between them (SeaLattice::blend) at every step.
+inline constexpr double kKnotsPerPeriod = 8.0;
 
 /// Where the near field is: its faces (the planes the walls would stand on), its floor, still
 /// water and lattice.
@@ -86,14 +97,23 @@ public:
     /// Whether x is past an open face (outside the near field through it).
     [[nodiscard]] bool outside(const glm::vec3& x) const;
 
+    /// The far field's velocity at a world point, ramped, from the lattice at time t (what the
+    /// particles of the bands see; velocity() is the direct sum), m/s.
+    [[nodiscard]] glm::dvec3 latticeVelocity(const glm::vec3& x, double t, int threads = 1);
+    /// The lattice of the far field at time t (updated when it holds another time).
+    const SeaLattice& lattice(double t, int threads = 1);
+
     /// Records the particles of the buffers and where they are, before a step.
     void holdBegin(const ParticleStore& particles);
-    /// Moves the recorded particles from where they were by dt at the far field's velocity
-    /// (taken at t0 + dt/2), and gives them its velocity at t0 + dt; the step's arrays must be
+    /// Moves the recorded particles from where they were by dt at the mean of their velocity
+    /// then and the far field's at t0 + dt (the trapezoid rule: for a particle held the step
+    /// before, the far field's at both ends), and gives them the far field's velocity at
+    /// t0 + dt; the step's arrays must be
     /// in the order holdBegin saw. `clockHeld` (a settling pre-roll): the far field of t0.
     void holdEnd(ParticleStore& particles, double t0, double dt, bool clockHeld, int threads);
-    /// Relaxes every particle in a band over a step of dt ending at time t.
-    void relax(ParticleStore& particles, double t, double dt, int threads) const;
+    /// Relaxes every particle in a band over a step of dt ending at time t (not those of the
+    /// buffers: they move with the far field already).
+    void relax(ParticleStore& particles, double t, double dt, int threads);
     /// Removes the particles past an open face; returns how many.
     std::uint32_t removeOutflow(ParticleStore& particles);
     /// Adds a particle (far-field velocity, given mass and rest density) at each lattice point
@@ -101,17 +121,22 @@ public:
     /// solids) and has no particle within 0.9 spacing; at most `capacity` particles in all.
     /// Returns how many.
     std::uint32_t refill(ParticleStore& particles, double t, float mass, MaterialIndex material, float restDensity,
-                         std::uint32_t capacity, const std::function<bool(const glm::vec3&)>& room);
+                         std::uint32_t capacity, const std::function<bool(const glm::vec3&)>& room, int threads = 1);
     [[nodiscard]] const ZoneTotals& totals() const { return totals_; }
 
 private:
+    // 1/τ at a distance s inward from the nearest open face.
+    [[nodiscard]] double rateAt(double s) const;
     // Distance from x to the nearest open face, inward; +inf with no open face.
     [[nodiscard]] double distanceToOpenFace(const glm::vec3& x) const;
+    // The far field's velocity at a world point from a lattice, ramped by r.
+    [[nodiscard]] glm::dvec3 velocityFrom(const SeaLattice& lattice, const glm::vec3& x, double r) const;
 
     Sea sea_;
     NearField near_;
     std::vector<OceanSide> sides_;
     unsigned openFaces_ = 0;
+    glm::dvec2 faceLow_{0.0}, faceHigh_{0.0};  // (x, z) of the open faces; ∓inf where closed
     double width_ = 0.0;
     double rampTime_ = 0.0;
     double tau0_ = 0.0;
@@ -119,6 +144,11 @@ private:
     std::vector<std::uint8_t> keep_;  // scratch of removeOutflow
     std::vector<std::uint32_t> held_;  // the buffers' particles at the step's start
     std::vector<glm::vec3> heldFrom_;
+    std::vector<glm::vec3> heldVelocity_;
+    std::vector<std::pair<std::int64_t, glm::vec3>> binned_;  // scratch of refill
+    std::optional<SeaLattice> lattice_;  // the far field for the bands, at the last time asked
+    std::vector<SeaLattice> knots_;      // two exact lattices at knots in time, with rates
+    double knotStep_ = 1.0;
 };
 
 }  // namespace tide::ocean
