@@ -35,6 +35,7 @@
 #include "core/planar.hpp"
 #include "core/scratch_resize.hpp"
 #include "core/validate.hpp"
+#include "sources/active_absorption_schaffer_klopman2000.hpp"
 #include "loads/contact_impulses.hpp"
 #include "loads/solid_loads.hpp"
 #include "loads/wall_loads.hpp"
@@ -117,6 +118,7 @@ struct World::Impl {
         WaveMaker maker;
         std::uint32_t begin;
         std::vector<glm::vec3> rest;
+        std::optional<ActiveAbsorption> absorber;  ///< a piston's, unless its absorption is off
     };
     std::vector<Paddle> paddles;
     /// Where the lattice of blocks and obstacles has a cell corner: the domain's corner, but
@@ -427,6 +429,33 @@ struct World::Impl {
                 boundary.acceleration[b] = glm::vec3(0.0f);
             }
         boundary.maxSpeed = 0.0f;
+    }
+
+    /// Whether a paddle's absorber acts: asked for, or automatic in a tank whose far end
+    /// absorbs (a damping zone, or a beach: a fixed plane facing the paddle), where the
+    /// waves that come back are the few the far end reflects.
+    [[nodiscard]] bool absorbing(const Paddle& paddle) const {
+        if (!paddle.absorber) return false;
+        if (paddle.maker.def().absorption == WaveMakerDef::Absorption::On) return true;
+        if (!dampingZones.empty()) return true;
+        for (const ObstacleDef& o : fixedObstacles)
+            if (o.shape == ObstacleDef::Shape::Plane && o.normal.x < 0.0f) return true;
+        return false;
+    }
+    /// Active absorption (sources/active_absorption_schaffer_klopman2000.hpp): each absorbing
+    /// paddle measures the surface at its gauge at the step's start and takes the correction
+    /// velocity for the step.
+    void absorbWaves() {
+        for (Paddle& paddle : paddles) {
+            if (!absorbing(paddle)) continue;
+            WaveMaker& maker = paddle.maker;
+            const float x = maker.def().x + static_cast<float>(maker.motion(time).x + paddle.absorber->gaugeDistance());
+            const float z = 0.5f * (wallsMin().z + wallsMax().z);
+            const float y = freeSurfaceHeight(particles, materials, periodic, kernel(), x, z);
+            const double offset = maker.correction().at(time);
+            const double still = static_cast<double>(def.domainMin.y) + maker.def().depth;
+            maker.setCorrection({offset, paddle.absorber->correctionVelocity(time, y, still, offset), time});
+        }
     }
 
     /// Puts the boundary particles of paddles and moving obstacles where their motion has
