@@ -454,7 +454,8 @@ struct World::Impl {
             const float y = freeSurfaceHeight(particles, materials, periodic, kernel(), x, z);
             const double offset = maker.correction().at(time);
             const double still = static_cast<double>(def.domainMin.y) + maker.def().depth;
-            maker.setCorrection({offset, paddle.absorber->correctionVelocity(time, y, still, offset), time});
+            const double velocity = paddle.absorber->correctionVelocity(time, y, still, offset, maker.correction().velocity);
+            maker.setCorrection({offset, velocity, time});
         }
     }
 

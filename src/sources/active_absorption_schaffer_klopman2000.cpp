@@ -27,6 +27,8 @@ ActiveAbsorption::ActiveAbsorption(const WaveMakerDef& def, std::span<const wave
     // radiates an amplitude a is ω a/F (the paddle components are made the same way).
     gain_ = omegaP / waves::pistonHeightToStroke(kdP);
     driftTime_ = kDriftPeriods * period;
+    waveHeight_ = spectrum ? def.spectrum.significantHeight : def.waveHeight;
+    for (const waves::PaddleComponent& c : components) peakAcceleration_ += c.amplitude * c.omega * c.omega;
     for (const waves::PaddleComponent& c : components) {
         if (!(c.waveAmplitude > 0.0)) continue;  // Madsen's second-order stroke: no free wave
         components_.push_back({c.waveAmplitude, c.omega, c.phase, waves::waveNumber(c.omega, d, g)});
@@ -50,8 +52,10 @@ double ActiveAbsorption::targetElevation(double t) const {
     return waves::ramp(t, rampTime_).value * eta;
 }
 
-double ActiveAbsorption::correctionVelocity(double t, float measuredY, double stillY, double offset) {
-    if (!std::isfinite(measuredY)) return t < rampTime_ ? 0.0 : -offset / driftTime_;  // dry: only bring it back
+double ActiveAbsorption::correctionVelocity(double t, float measuredY, double stillY, double offset,
+                                            double previousVelocity) {
+    if (!std::isfinite(measuredY)) return t < rampTime_ ? 0.0 : previousVelocity;  // a dry gauge: keep going
+    const double dt = state_.started ? t - state_.lastTime : 0.0;
     const double error = (static_cast<double>(measuredY) - stillY) - targetElevation(t);
     // The mean starts from the first reading, of still water (the gauge's own bias, no wave
     // in it), and follows through the ramp, so the correction starts without a transient.
@@ -62,7 +66,14 @@ double ActiveAbsorption::correctionVelocity(double t, float measuredY, double st
         state_.lastTime = t;
     }
     if (t < rampTime_) return 0.0;
-    return -gain_ * (error - state_.mean) - offset / driftTime_;
+    // Limits (as DualSPHysics limits the paddle's acceleration): a reflection is no higher than
+    // the wave made, so a larger error is the gauge misreading (a splash on the line); and the
+    // correction's velocity changes no faster than twice the prescribed stroke's peak
+    // acceleration, which keeps a misreading from jerking the paddle.
+    const double reflected = std::clamp(error - state_.mean, -waveHeight_, waveHeight_);
+    const double wanted = -gain_ * reflected - offset / driftTime_;
+    const double change = 2.0 * peakAcceleration_ * dt;
+    return std::clamp(wanted, previousVelocity - change, previousVelocity + change);
 }
 
 }  // namespace tide

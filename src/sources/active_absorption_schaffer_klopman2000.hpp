@@ -25,7 +25,9 @@
 ///     U_a = −G (e − ē) − X_a / τ,   dē/dt = (e − ē)/τ,   τ = 4 T_p          (drift correction)
 ///
 /// which leaves waves near ω_p absorbed (2.3° of phase per stage at 4 periods) and a steady
-/// bias e₀ without effect. The target η_I is the linear wave of each paddle component at the
+/// bias e₀ without effect. A misreading (a splash on the gauge's line next to a receding
+/// paddle) would jerk the paddle: the error is limited to ± H and the correction's
+/// acceleration to twice the stroke's peak (DualSPHysics' `limitace`, 2 by default). The target η_I is the linear wave of each paddle component at the
 /// gauge, plus Stokes' bound second harmonic for regular waves (Dean & Dalrymple eq. 11.42),
 /// which the measurement contains and the paddle must not try to cancel.
 
@@ -55,10 +57,11 @@ public:
     };
 
     /// The correction velocity U_a (m/s) for the step starting at t, from the surface height y
-    /// measured at the gauge (NaN if dry), the still-water level y0 and the correction's
-    /// displacement X_a now. Zero during the wave maker's ramp (the target is ramped too, but the
-    /// SPH tank is still settling).
-    double correctionVelocity(double t, float measuredY, double stillY, double offset);
+    /// measured at the gauge (NaN if dry: the last velocity is kept), the still-water level y0,
+    /// the correction's displacement X_a now and its velocity over the last step. Zero during
+    /// the wave maker's ramp. The error η_M − η_I − ē is limited to ± the wave height and the
+    /// velocity's change to twice the stroke's peak acceleration (Σ A ω²) times the step.
+    double correctionVelocity(double t, float measuredY, double stillY, double offset, double previousVelocity);
 
     /// The elevation the paddle is asked to make at the gauge at time t, m.
     [[nodiscard]] double targetElevation(double t) const;
@@ -78,7 +81,7 @@ private:
         double amplitude, omega, phase, k;
     };
     std::vector<Component> components_;
-    double rampTime_, gain_, driftTime_, gaugeDistance_;
+    double rampTime_, gain_, driftTime_, gaugeDistance_, waveHeight_ = 0.0, peakAcceleration_ = 0.0;
     double boundAmplitude_ = 0.0;  ///< Stokes' second harmonic of a regular wave at the gauge, m
     State state_;
 };
