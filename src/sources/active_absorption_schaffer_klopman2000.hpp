@@ -2,8 +2,11 @@
 /// \file
 /// Active wave absorption at a piston paddle from the free-surface elevation measured in
 /// front of it (Schäffer & Klopman 2000, "Review of multidirectional active wave absorption
-/// methods", J. Waterway Port Coastal Ocean Eng. 126(2), the 2D near-field elevation feedback;
-/// in SPH as DualSPHysics' AWAS, Altomare et al. 2017, Coastal Engineering 127, §2.3).
+/// methods", J. Waterway Port Coastal Ocean Eng. 126(2): 2D absorption by near-field
+/// elevation feedback; in SPH as DualSPHysics' AWAS, Altomare et al. 2017, "Long-crested wave
+/// generation and absorption for SPH-based DualSPHysics model", Coastal Engineering 127). The
+/// papers were not at hand when this was written: the law below is the piston's linear
+/// transfer function inverted, and its shallow-water limit is DualSPHysics' form.
 ///
 /// A wave travelling towards the paddle (elevation η_R at its face) leaves the tank when the
 /// paddle moves with the water under it. The paddle velocity that radiates −η_R is the
@@ -28,8 +31,9 @@
 /// bias e₀ without effect. A misreading (a splash on the gauge's line next to a receding
 /// paddle) would jerk the paddle: the error is limited to ± H and the correction's
 /// acceleration to twice the stroke's peak (DualSPHysics' `limitace`, 2 by default). The target η_I is the linear wave of each paddle component at the
-/// gauge, plus Stokes' bound second harmonic for regular waves (Dean & Dalrymple eq. 11.42),
-/// which the measurement contains and the paddle must not try to cancel.
+/// gauge, plus Stokes' bound second harmonic for regular waves, η₂ = (πH²/8λ) cosh kd
+/// (2 + cosh 2kd)/sinh³ kd cos 2θ, which the measurement contains and the paddle must not try
+/// to cancel.
 
 #include <span>
 #include <vector>
