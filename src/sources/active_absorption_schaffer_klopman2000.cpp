@@ -28,7 +28,10 @@ ActiveAbsorption::ActiveAbsorption(const WaveMakerDef& def, std::span<const wave
     gain_ = omegaP / waves::pistonHeightToStroke(kdP);
     driftTime_ = kDriftPeriods * period;
     waveHeight_ = spectrum ? def.spectrum.significantHeight : def.waveHeight;
-    for (const waves::PaddleComponent& c : components) peakAcceleration_ += c.amplitude * c.omega * c.omega;
+    for (const waves::PaddleComponent& c : components) {
+        peakAcceleration_ += c.amplitude * c.omega * c.omega;
+        maxOffset_ += 2.0 * c.amplitude;
+    }
     for (const waves::PaddleComponent& c : components) {
         if (!(c.waveAmplitude > 0.0)) continue;  // Madsen's second-order stroke: no free wave
         components_.push_back({c.waveAmplitude, c.omega, c.phase, waves::waveNumber(c.omega, d, g)});
@@ -73,7 +76,14 @@ double ActiveAbsorption::correctionVelocity(double t, float measuredY, double st
     const double reflected = std::clamp(error - state_.mean, -waveHeight_, waveHeight_);
     const double wanted = -gain_ * reflected - offset / driftTime_;
     const double change = 2.0 * peakAcceleration_ * dt;
-    return std::clamp(wanted, previousVelocity - change, previousVelocity + change);
+    double velocity = std::clamp(wanted, previousVelocity - change, previousVelocity + change);
+    // Absorbing even a full reflection takes a correction no larger than the stroke itself
+    // (a_R/F ≤ a_I/F = A): past twice the stroke the paddle only comes back. Without this bound
+    // the paddle of issue 42's 2D flume ran away from the water at 9.1 s (no force on it for
+    // 0.5 s, then a surge of 8 cm at the gauges).
+    if (offset >= maxOffset_) velocity = std::min(velocity, 0.0);
+    if (offset <= -maxOffset_) velocity = std::max(velocity, 0.0);
+    return velocity;
 }
 
 }  // namespace tide

@@ -30,7 +30,8 @@
 /// which leaves waves near ω_p absorbed (2.3° of phase per stage at 4 periods) and a steady
 /// bias e₀ without effect. A misreading (a splash on the gauge's line next to a receding
 /// paddle) would jerk the paddle: the error is limited to ± H and the correction's
-/// acceleration to twice the stroke's peak (DualSPHysics' `limitace`, 2 by default). The target η_I is the linear wave of each paddle component at the
+/// acceleration to twice the stroke's peak (DualSPHysics' `limitace`, 2 by default); the
+/// correction's displacement stays within twice the stroke amplitude. The target η_I is the linear wave of each paddle component at the
 /// gauge, plus Stokes' bound second harmonic for regular waves, η₂ = (πH²/8λ) cosh kd
 /// (2 + cosh 2kd)/sinh³ kd cos 2θ, which the measurement contains and the paddle must not try
 /// to cancel.
@@ -63,8 +64,9 @@ public:
     /// The correction velocity U_a (m/s) for the step starting at t, from the surface height y
     /// measured at the gauge (NaN if dry: the last velocity is kept), the still-water level y0,
     /// the correction's displacement X_a now and its velocity over the last step. Zero during
-    /// the wave maker's ramp. The error η_M − η_I − ē is limited to ± the wave height and the
-    /// velocity's change to twice the stroke's peak acceleration (Σ A ω²) times the step.
+    /// the wave maker's ramp. The error η_M − η_I − ē is limited to ± the wave height, the
+    /// velocity's change to twice the stroke's peak acceleration (Σ A ω²) times the step, and
+    /// past twice the stroke amplitude (2 Σ A) the correction only comes back.
     double correctionVelocity(double t, float measuredY, double stillY, double offset, double previousVelocity);
 
     /// The elevation the paddle is asked to make at the gauge at time t, m.
@@ -86,6 +88,7 @@ private:
     };
     std::vector<Component> components_;
     double rampTime_, gain_, driftTime_, gaugeDistance_, waveHeight_ = 0.0, peakAcceleration_ = 0.0;
+    double maxOffset_ = 0.0;  ///< twice the stroke amplitude Σ A, m
     double boundAmplitude_ = 0.0;  ///< Stokes' second harmonic of a regular wave at the gauge, m
     State state_;
 };
