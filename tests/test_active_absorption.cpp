@@ -131,10 +131,17 @@ TEST(ClosedFlume, AbsorptionHoldsTheEnvelopeSteady) {
     }
 }
 
-/// A short 2D flume with a damping zone (absorption automatic, so on) and a short ramp, run
-/// past the start of the absorption: every particle by id, then the paddle's displacement.
+/// A short 2D flume with a damping zone and an absorbing paddle with a short ramp.
+World absorbingFlume(int threads, WaveMakerDef::Absorption absorption = WaveMakerDef::Absorption::On) {
+    WaveMakerDef paddle = piston(0.3f, 0.04f, 1.0f, 0.2f);
+    paddle.absorption = absorption;
+    return scenarios::planarFlume(0.02f, 1.6f, paddle, 0.4f, threads);
+}
+
+/// The absorbing flume run past the start of the absorption: every particle by id, and the
+/// paddle's displacement.
 std::vector<glm::vec3> absorbingRun(int threads, double seconds, double* displacement = nullptr) {
-    World world = scenarios::planarFlume(0.02f, 1.6f, piston(0.3f, 0.04f, 1.0f, 0.2f), 0.4f, threads);
+    World world = absorbingFlume(threads);
     world.advance(seconds);
     if (displacement) *displacement = world.waveMakerDisplacement(0, world.time());
     const ParticleStore& p = world.particles();
@@ -146,20 +153,23 @@ std::vector<glm::vec3> absorbingRun(int threads, double seconds, double* displac
     return byId;
 }
 
-TEST(ActiveAbsorption, OnByDefaultWithADampingZoneAndBitIdenticalOnOneAndTwoThreads) {
+TEST(ActiveAbsorption, CorrectsThePaddleBitIdenticallyOnOneAndTwoThreadsAndIsOffByDefault) {
     double moved = 0.0;
     const auto one = absorbingRun(1, 0.6, &moved), two = absorbingRun(2, 0.6);
     ASSERT_EQ(one.size(), two.size());
     EXPECT_EQ(std::memcmp(one.data(), two.data(), one.size() * sizeof(glm::vec3)), 0);
     // The prescribed stroke alone at 0.6 s, against which the correction shows.
-    World plain = scenarios::planarFlume(0.02f, 1.6f, piston(0.3f, 0.04f, 1.0f, 0.2f), 0.0f, 1);
-    EXPECT_GT(std::abs(moved - plain.waveMakerDisplacement(0, 0.6)), 1e-5);
+    World plain = absorbingFlume(1, WaveMakerDef::Absorption::Off);
+    const double prescribed = plain.waveMakerDisplacement(0, 0.6);
+    EXPECT_GT(std::abs(moved - prescribed), 1e-5);
+    // Automatic is off for now (docs/waves.md § Active absorption), damping zone or not.
+    World automatic = absorbingFlume(1, WaveMakerDef::Absorption::Automatic);
+    automatic.advance(0.6);
+    EXPECT_EQ(automatic.waveMakerDisplacement(0, 0.6), prescribed);
 }
 
 TEST(ActiveAbsorption, ResumesBitIdenticallyFromACheckpoint) {
-    const auto make = [] {
-        return scenarios::planarFlume(0.02f, 1.6f, piston(0.3f, 0.04f, 1.0f, 0.2f), 0.4f, 1);
-    };
+    const auto make = [] { return absorbingFlume(1); };
     World uninterrupted = make();
     uninterrupted.advance(0.4);  // the absorption runs from 0.2 s
     const std::string bytes = io::encodeCheckpoint(uninterrupted.saveState(), "test");
