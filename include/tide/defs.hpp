@@ -359,6 +359,15 @@ struct WaveMakerDef {
     /// second-order correction of the stroke that cancels it (Madsen 1971; regular waves from
     /// a piston only).
     int order = 1;
+    /// Active absorption at the paddle (scene key wavemaker.absorption; Schäffer & Klopman
+    /// 2000, sources/active_absorption_schaffer_klopman2000.hpp): the piston also moves with the
+    /// waves arriving at it, measured a few spacings in front of its face, so waves reflected in
+    /// the tank leave it instead of building up. Automatic: off for now (issue 42 asks it on
+    /// with a damping zone or a beach; in its own 2D flume that made the paddle lose the water,
+    /// docs/notes/waves.md). On: a piston making regular or irregular waves; refused for a flap
+    /// or a solitary wave.
+    enum class Absorption { Automatic, On, Off };
+    Absorption absorption = Absorption::Automatic;
 };
 
 /// A damping zone (sponge layer): velocities of particles between `xStart` and `xEnd` are

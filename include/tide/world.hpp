@@ -211,6 +211,9 @@ struct WorldState {
     std::vector<EmitterProgress> emitters;
     std::vector<double> solverState;      ///< scalars the solver carries between steps (see Solver)
     std::vector<double> bodyState;        ///< the dynamic obstacles' state (tide::bodies::BodySystem)
+    /// The wave makers' active absorption (WaveMakerDef::absorption), per paddle that has it:
+    /// its correction's offset, velocity and start time, the error's mean, its time, started.
+    std::vector<double> paddleState;
 };
 
 /// Names of the solvers World accepts in SolverDef::method.

@@ -395,7 +395,10 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     w.solids.push_back({SolidInfo::Kind::WaveMaker, static_cast<std::uint32_t>(w.paddles.size()),
                         "wavemaker" + std::to_string(w.paddles.size())});
     const std::uint32_t begin = w.boundary.addMoving(rest, 1.0f / w.latticeSum, solid);
-    w.paddles.push_back({std::move(maker), begin, std::move(rest)});
+    std::optional<ActiveAbsorption> absorber;
+    if (def.type == WaveMakerDef::Type::Piston && def.absorption != WaveMakerDef::Absorption::Off)
+        absorber.emplace(def, maker.components(), g, d.particleSpacing);
+    w.paddles.push_back({std::move(maker), begin, std::move(rest), std::move(absorber)});
     w.moveBoundaries(w.time);
 }
 

@@ -24,6 +24,11 @@ void World::clear() {
     w.stepsSinceReorder = 0;
     w.divergence.reset();
     w.resetLoads();
+    for (Impl::Paddle& paddle : w.paddles)
+        if (paddle.absorber) {
+            paddle.maker.setCorrection({});
+            paddle.absorber->setState({});
+        }
 }
 
 const std::optional<Divergence>& World::divergence() const { return impl_->divergence; }
@@ -39,10 +44,18 @@ WorldState World::saveState() const {
     for (const EmitterState& e : w.emitters) s.emitters.push_back({e.active, e.travelled});
     s.solverState = w.solver->carriedState();
     if (w.bodySystem) s.bodyState = w.bodySystem->saveState();
+    for (const Impl::Paddle& paddle : w.paddles) {
+        if (!paddle.absorber) continue;
+        const WaveMaker::Correction& c = paddle.maker.correction();
+        const ActiveAbsorption::State& a = paddle.absorber->state();
+        s.paddleState.insert(s.paddleState.end(), {c.offset, c.velocity, c.since, a.mean, a.lastTime, a.started ? 1.0 : 0.0});
+    }
     return s;
 }
 
 namespace {
+constexpr std::size_t kPaddleScalars = 6;  ///< per absorbing paddle, in saveState's order
+
 [[noreturn]] void misfit(const std::string& what) {
     throw std::invalid_argument("state: " + what + " (was it saved from another scene?)");
 }
@@ -90,6 +103,14 @@ void checkFits(const WorldState& s, std::size_t materials, std::size_t emitters,
 void World::restoreState(WorldState state) {
     Impl& w = *impl_;
     checkFits(state, w.materials.size(), w.emitters.size(), w.def.capacity);
+    std::size_t absorbers = 0;
+    for (const Impl::Paddle& paddle : w.paddles) absorbers += paddle.absorber ? 1 : 0;
+    // Empty: a checkpoint from before active absorption; its paddles resume uncorrected.
+    if (!state.paddleState.empty() && state.paddleState.size() != kPaddleScalars * absorbers)
+        misfit(std::to_string(state.paddleState.size()) + " wave maker scalars saved, this world's absorbing paddles carry " +
+               std::to_string(kPaddleScalars * absorbers));
+    for (const double x : state.paddleState)
+        if (!std::isfinite(x)) misfit("a wave maker scalar is not finite");
     if (!w.bodySystem && !state.bodyState.empty()) misfit("the state holds floating bodies, this world has none");
     const std::vector<double> bodiesBefore = w.bodySystem ? w.bodySystem->saveState() : std::vector<double>{};
     if (w.bodySystem) {
@@ -115,6 +136,18 @@ void World::restoreState(WorldState state) {
     for (std::size_t e = 0; e < w.emitters.size(); ++e) {
         w.emitters[e].active = state.emitters[e].active;
         w.emitters[e].travelled = state.emitters[e].travelled;
+    }
+    std::size_t k = 0;
+    for (Impl::Paddle& paddle : w.paddles) {
+        if (!paddle.absorber) continue;
+        if (state.paddleState.empty()) {
+            paddle.maker.setCorrection({});
+            paddle.absorber->setState({});
+            continue;
+        }
+        const double* v = state.paddleState.data() + kPaddleScalars * k++;
+        paddle.maker.setCorrection({v[0], v[1], v[2]});
+        paddle.absorber->setState({v[3], v[4], v[5] != 0.0});
     }
     w.divergence.reset();
     w.resetLoads();  // a checkpoint is taken where the run starts a new average

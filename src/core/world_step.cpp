@@ -16,6 +16,7 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     const bool held = clockMode == Clock::Held;
     PhaseClock clock(w.stats.phaseSeconds);
     w.resolveSoundSpeed();
+    if (!held) w.absorbWaves();
     w.moveBoundaries(w.time);
     if (held) w.holdBoundaries();
     w.rebuildNeighbors();

@@ -8,7 +8,7 @@ namespace tide::io::scene_reading {
 /// irregular sea (spectrum). Lengths scaled by `scale`.
 void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool domainOk) {
     const std::string path = "wavemaker";
-    if (!r.object(j, path, {"type", "x", "depth", "wave_height", "period", "ramp_time", "spectrum", "order"}))
+    if (!r.object(j, path, {"type", "x", "depth", "wave_height", "period", "ramp_time", "spectrum", "order", "absorption"}))
         return;
     WaveMakerDef w;
     bool ok = true;
@@ -35,6 +35,8 @@ void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool dom
         if (*order != std::floor(*order)) r.fail(join(path, "order"), "must be 1 or 2, got " + show(j.at("order")));
         w.order = static_cast<int>(*order);
     }
+    if (auto absorption = r.boolean(j, "absorption", path))
+        w.absorption = *absorption ? WaveMakerDef::Absorption::On : WaveMakerDef::Absorption::Off;
     const WorldDef& world = scene.world;
     if (x && domainOk && !(w.x > world.domainMin.x && w.x < world.domainMax.x)) {
         std::ostringstream msg;

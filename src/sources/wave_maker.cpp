@@ -28,6 +28,10 @@ void checkWaveFitsTank(const WaveMakerDef& def, float length, float spacing, dou
     if (def.order == 2 && !(regular && def.type == WaveMakerDef::Type::Piston))
         throw std::invalid_argument("wavemaker.order: 2 is for regular waves from a piston, got 2 with " +
                                     std::string(def.type == WaveMakerDef::Type::Flap ? "a flap" : def.type == WaveMakerDef::Type::Solitary ? "a solitary wave" : "a spectrum"));
+    if (def.absorption == WaveMakerDef::Absorption::On && def.type != WaveMakerDef::Type::Piston)
+        throw std::invalid_argument(std::string("wavemaker.absorption: active absorption is for a piston making regular "
+                                                "or irregular waves, got true with ") +
+                                    (def.type == WaveMakerDef::Type::Flap ? "a flap" : "a solitary wave"));
     const double d = def.depth;
     if (def.type == WaveMakerDef::Type::Solitary) {
         if (!(def.waveHeight > 0.0f)) return;  // the caller reports it
@@ -82,7 +86,9 @@ WaveMaker::Motion WaveMaker::motion(double t) const {
         a -= c.amplitude * c.omega * c.omega * std::sin(phase);
     }
     const waves::Ramp r = waves::ramp(t, def_.rampTime);
-    return {r.value * x, r.rate * x + r.value * v, r.curvature * x + 2.0 * r.rate * v + r.value * a};
+    // The correction's velocity is constant over a step: it adds no acceleration.
+    return {r.value * x + correction_.at(t), r.rate * x + r.value * v + correction_.velocity,
+            r.curvature * x + 2.0 * r.rate * v + r.value * a};
 }
 
 WaveMaker::Pose WaveMaker::pose(double t) const {

@@ -71,6 +71,15 @@ public:
     /// velocity into the paddle relative to it.
     void project(double t, ParticleStore& particles, float margin, int threads) const;
 
+    /// A correction added to the prescribed stroke (active absorption, piston):
+    /// X(t) += offset + velocity (t − since), constant in velocity over a step.
+    struct Correction {
+        double offset = 0.0, velocity = 0.0, since = 0.0;
+        [[nodiscard]] double at(double t) const { return offset + velocity * (t - since); }
+    };
+    void setCorrection(const Correction& c) { correction_ = c; }
+    [[nodiscard]] const Correction& correction() const { return correction_; }
+
     [[nodiscard]] const WaveMakerDef& def() const { return def_; }
     [[nodiscard]] const std::vector<waves::PaddleComponent>& components() const { return components_; }
 
@@ -88,6 +97,7 @@ private:
     glm::vec3 hinge_;
     std::optional<waves::SolitaryStroke> solitary_;
     std::vector<waves::PaddleComponent> components_;
+    Correction correction_;
 };
 
 }  // namespace tide

@@ -84,6 +84,26 @@ inline World waveFlume(float spacing, float length, float depth, const WaveMaker
     return world;
 }
 
+/// A 2D flume (WorldDef::dimensions = 2) `length` long with water `depth` deep from the
+/// paddle's face to the far wall, which reflects every wave, or to a damping zone
+/// `dampingLength` long before it; the paddle's own settings (absorption included) as given.
+inline World planarFlume(float spacing, float length, const WaveMakerDef& paddle, float dampingLength = 0.0f,
+                         int threads = 0, const SolverDef& solver = {}) {
+    WorldDef def;
+    def.dimensions = 2;
+    def.solver = solver;
+    def.domainMin = {0.0f, 0.0f, 0.0f};
+    def.domainMax = {length, 2.0f * paddle.depth, 0.0f};
+    def.particleSpacing = spacing;
+    def.threads = threads;
+    World world(def);
+    world.addMaterial(MaterialDef{});
+    world.addWaveMaker(paddle);
+    if (dampingLength > 0.0f) world.addDampingZone({length - dampingLength, length, 10.0f});
+    world.addBlock({{paddle.x, 0.0f, 0.0f}, {length, paddle.depth, 0.0f}, {}, 0});
+    return world;
+}
+
 /// A plate pushed through still water: a flume `length` long with water `depth` deep, one
 /// periodic cell of 4 spacings across z (2D), and a plate 4 spacings thick standing on the
 /// floor in the middle, 2.5 depths high, that moves along +x at `speed` after a 0.1 s ramp.

@@ -40,6 +40,22 @@ inline double mean(const Record& r) {
     return r.eta.empty() ? 0.0 : sum / static_cast<double>(r.eta.size());
 }
 
+/// The wave-height envelope over periods [first, last) of length T (periods counted from
+/// t = 0): the mean over those periods of each period's highest minus lowest η. A standing
+/// or partly standing wave's local height, which a growing seiche makes grow.
+inline double envelope(const Record& r, double period, int first, int last) {
+    double sum = 0.0;
+    int count = 0;
+    for (int n = first; n < last; ++n) {
+        const Record w = window(r, n * period, (n + 1) * period);
+        if (w.eta.empty()) continue;
+        const auto [lo, hi] = std::minmax_element(w.eta.begin(), w.eta.end());
+        sum += *hi - *lo;
+        ++count;
+    }
+    return count > 0 ? sum / count : 0.0;
+}
+
 /// Zero up-crossing analysis about the record's mean (the standard wave-by-wave definition,
 /// e.g. Goda, "Random seas and design of maritime structures", §2.1): the times of up-crossings
 /// (linearly interpolated), and the crest-to-trough height of each wave between two of them.

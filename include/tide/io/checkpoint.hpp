@@ -26,8 +26,8 @@ namespace tide::io {
 
 /// The format version written (2: dye concentration per particle; 3: the count of
 /// unconverged pressure solves in the stats; 4: the divergence solve's iteration sum after
-/// the stats' phase times; 5: the floating bodies' state after the solver's scalars); it reads back to kOldestCheckpointVersion and refuses the others.
-inline constexpr std::uint32_t kCheckpointVersion = 5;
+/// the stats' phase times; 5: the floating bodies' state after the solver's scalars; 6: the wave makers' active absorption after the bodies'); it reads back to kOldestCheckpointVersion and refuses the others.
+inline constexpr std::uint32_t kCheckpointVersion = 6;
 inline constexpr std::uint32_t kOldestCheckpointVersion = 2;
 
 /// A checkpoint that cannot be used; what() names the file and the problem.
