@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -102,6 +103,74 @@ TEST(FloatingBodies2D, BadPlanarBodiesAreRefusedNamingTheField) {
     ASSERT_EQ(world.bodies().size(), 1u);
     EXPECT_NEAR(world.bodies()[0].position.y, 0.5, 1e-6);
     EXPECT_EQ(world.bodies()[0].position.z, 0.0) << "a prism centred on the plane";
+}
+
+}  // namespace
+
+namespace {
+
+using namespace tide;
+
+/// Still water 0.3 m deep in a 2D tank 0.6 m wide at 1 cm, and a box `width` × `height` of
+/// `density` floating at Archimedes' draft, turned at `spin` rad/s at the start; the centre of
+/// mass `ballast` m above its bottom if > 0.
+World tankWithFloatingBox(float width, float height, double density, float spin, float ballast = 0.0f) {
+    WorldDef def;
+    def.dimensions = 2;
+    def.domainMax = {0.6f, 0.55f, 0.0f};
+    def.particleSpacing = 0.01f;
+    def.threads = 1;
+    World world(def);
+    world.addMaterial(MaterialDef{});
+    const float depth = 0.3f, draft = static_cast<float>(density / 1000.0) * height;
+    ObstacleDef box;
+    box.min = {0.3f - 0.5f * width, depth - draft, 0.0f};
+    box.max = {0.3f + 0.5f * width, depth - draft + height, 0.0f};
+    box.name = "box";
+    BodyDynamicsDef body;
+    body.density = density;
+    body.angularVelocity = {0.0f, 0.0f, spin};
+    if (ballast > 0.0f) body.centerOfMass = glm::vec3(0.3f, depth - draft + ballast, 0.0f);
+    box.dynamics = body;
+    world.addObstacle(box);
+    BlockDef water;
+    water.max = {0.6f, depth, 0.0f};
+    world.addBlock(water);
+    world.settle(0.3);
+    return world;
+}
+
+double rollDegrees(const BodyState& b) { return 2.0 * std::atan2(b.orientation.z, b.orientation.w) * 180.0 / M_PI; }
+
+// A tall box (0.1 × 0.2 m, density 500) ballasted to a centre of mass 4 cm above its bottom:
+// GM = KB + BM − KG = 0.05 + b²/(12 T) − 0.04 = +0.018 m. Rolled past 10° it comes back
+// upright and swings about it.
+TEST(FloatingBodies2D, ABoxWithPositiveMetacentricHeightRightsItself) {
+    World world = tankWithFloatingBox(0.1f, 0.2f, 500.0, 1.3f, 0.04f);
+    double largest = 0.0, smallest = 0.0, last = 0.0;
+    world.advance(2.0, [&] {
+        last = rollDegrees(world.bodies().at(0));
+        largest = std::max(largest, last);
+        smallest = std::min(smallest, last);
+    });
+    std::printf("tall box: roll %.2f..%.2f degrees, %.2f at 2 s\n", smallest, largest, last);
+    EXPECT_GT(largest, 10.0) << "rolled past 10 degrees";
+    EXPECT_LT(smallest, -0.25 * largest) << "came back upright and swung through it";
+    EXPECT_LT(std::abs(last), largest);
+}
+
+// A square box of density 500: GM = T/2 + b²/(12 T) − H/2 = −H/12 < 0. Upright is unstable;
+// nudged, it turns onto its diagonal (45°) and floats there.
+TEST(FloatingBodies2D, ASquareBoxOfHalfTheDensityTurnsOntoItsDiagonal) {
+    World world = tankWithFloatingBox(0.1f, 0.1f, 500.0, 0.3f);
+    std::vector<double> late;
+    world.advance(3.0, [&] {
+        if (world.time() > 2.0) late.push_back(rollDegrees(world.bodies().at(0)));
+    });
+    double mean = 0.0;
+    for (double a : late) mean += a / static_cast<double>(late.size());
+    std::printf("square box: mean roll over 2-3 s %.2f degrees\n", mean);
+    EXPECT_NEAR(std::abs(mean), 45.0, 4.5);
 }
 
 }  // namespace
