@@ -125,6 +125,8 @@ bool readBodyDynamics(Reader& r, const json& j, const std::string& path, float s
             for (std::size_t k = 0; k < free.size(); ++k) {
                 if (!free[k].is_string() || std::find(kAxes.begin(), kAxes.end(), free[k].get<std::string>()) == kAxes.end())
                     r.fail(indexed(where, k), "unknown axis " + show(free[k]) + ": one of x, y, z, rx, ry, rz");
+                else if (r.dimensions == 2 && free[k] != "x" && free[k] != "y" && free[k] != "rz")
+                    r.fail(indexed(where, k), "a 2D body moves in x, y and rz only, got " + show(free[k]));
                 else
                     body.freeAxes.push_back(free[k].get<std::string>());
             }
