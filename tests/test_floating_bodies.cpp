@@ -54,16 +54,27 @@ TEST(FloatingBodies, ABoxOfHalfTheDensityFloatsAtHalfItsHeight) {
 
 // A box twice as dense as water lands on the floor and rests there. Before contact began at a
 // particle spacing's gap, the water squeezed into a thinner film (closer than a spacing to both
-// solids' particles) kicked the box back up at 0.8 m/s and the run diverged. The mean contact
-// force is printed against (rho_b - rho) g V: it reads 10 % low (docs/rigid-bodies.md). Just
-// after landing (t = 0.17 s) the film still lifts it by 0.8 mm once.
+// solids' particles) kicked the box back up at 0.8 m/s and the run diverged. On a critically
+// damped contact the resting box rang, driven by the fluid load's noise, and the floor carried
+// 10 % less than (rho_b - rho) g V (5.29 N) however long it rested; overdamped (World's ζ = 5)
+// the floor takes what the water leaves once the tank has calmed after the landing.
+// Measured: the floor carries 5.762 N, -2.1 % from (rho_b - rho) g V and +0.02 % from m g less
+// what the water gives the box held still, which at 1 cm is 2.1 % above rho g V (a fixed box
+// in mid-water 2.7 %, at 5 mm 0.1 %): the rest of the gap is the loads' resolution.
 TEST(FloatingBodies, ADenseBoxLandsOnTheFloorAndRests) {
-    World world = tankWithBox(2000.0, 0.02f);  // lands after 1 cm, at t = 0.07 s, settles by 0.25 s
-    world.advance(0.25);
-    double impulse = 0.0, duration = 0.0, lowest = 1.0, highest = 0.0, fastest = 0.0;
+    World world = tankWithBox(2000.0, 0.02f);  // lands after 1 cm
     const std::uint32_t solid = *world.findSolid("box");
+    double held = 0.0, heldTime = 0.0, settled = 0.0;
+    world.settle(0.6, 0.0f, [&] {  // the body held where it starts, fully submerged
+        settled += world.stats().lastDt;
+        if (settled < 0.4) return;
+        held += world.solidLoads().at(solid).force().y * world.stats().lastDt;
+        heldTime += world.stats().lastDt;
+    });
+    world.advance(1.2);
+    double impulse = 0.0, duration = 0.0, lowest = 1.0, highest = 0.0, fastest = 0.0;
     double fluid = 0.0;
-    world.advance(0.2, [&]() {
+    world.advance(0.3, [&]() {
         const BodyState b = world.bodies().at(0);
         const double dt = world.stats().lastDt;
         impulse += b.contactForce.y * dt;
@@ -73,14 +84,19 @@ TEST(FloatingBodies, ADenseBoxLandsOnTheFloorAndRests) {
         highest = std::max(highest, b.position.y);
         fastest = std::max(fastest, std::abs(b.velocity.y));
     });
-    const double volume = 0.1 * 0.1 * 0.06, expected = (2000.0 - 1000.0) * 9.81 * volume;
-    std::printf("mean contact force %.4f N, fluid force %.4f N, (rho_b - rho) g V = %.4f N; centre %.5f..%.5f m, "
-                "speed <= %.4f m/s\n",
-                impulse / duration, fluid / duration, expected, lowest, highest, fastest);
+    const double volume = 0.1 * 0.1 * 0.06, weight = 2000.0 * 9.81 * volume, buoyancy = 1000.0 * 9.81 * volume;
+    const double contact = impulse / duration, water = held / heldTime;
+    std::printf("held: the water gives %.4f N (rho g V = %.4f N, %+.2f %%); resting: contact %.4f N against m g - that = "
+                "%.4f N (%+.2f %%) and (rho_b - rho) g V = %.4f N (%+.2f %%), fluid %.4f N; centre %.5f..%.5f m, speed <= %.4f m/s\n",
+                water, buoyancy, 100.0 * (water / buoyancy - 1.0), contact, weight - water,
+                100.0 * (contact / (weight - water) - 1.0), weight - buoyancy, 100.0 * (contact / (weight - buoyancy) - 1.0),
+                fluid / duration, lowest, highest, fastest);
     // At rest a spacing above the floor (the film the fluid resolves), not bouncing.
     EXPECT_NEAR(lowest, 0.05 + kSpacing, 0.1 * kSpacing);
     EXPECT_LT(highest - lowest, 0.1 * kSpacing);
-    EXPECT_GT(impulse / duration, 0.5 * expected) << "the floor carries it";
+    EXPECT_NEAR(water, buoyancy, 0.03 * buoyancy) << "Archimedes at 1 cm";
+    EXPECT_NEAR(contact, weight - water, 0.01 * (weight - buoyancy)) << "the floor carries what the water does not";
+    EXPECT_NEAR(contact, weight - buoyancy, 0.03 * (weight - buoyancy)) << "acceptance 3";
 }
 
 TEST(FloatingBodies, CheckpointsAndThreadCountsChangeNothing) {

@@ -408,6 +408,23 @@ TEST(Scene2D, RefusesBadDimensionsAndVectorsNamingThePath) {
     const std::string circle3D = R"({"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "particle_spacing": 0.05,
         "end_time": 0.1, "materials": [{"name": "water", "density": 1000}], "obstacles": [{"type": "circle", "center": [0.5, 0.5], "radius": 0.1}]})";
     EXPECT_NE(sceneProblems(circle3D).find("obstacles[0].type: \"circle\" is a 2D shape"), std::string::npos);
+    // Floating bodies in 2D: a box or circle turning about z; a polygon is not one.
+    const io::Scene floating = io::parseScene(
+        planarScene(R"({"type": "circle", "center": [0.35, 0.2], "radius": 0.03, "dynamic": true, "density": 1200, "angular_velocity": 0.5})"),
+        "scene.json", ".");
+    ASSERT_TRUE(floating.obstacles.at(0).dynamics.has_value());
+    EXPECT_EQ(floating.obstacles[0].dynamics->angularVelocity, glm::vec3(0.0f, 0.0f, 0.5f));
+    EXPECT_NE(sceneProblems(planarScene(R"({"type": "circle", "center": [0.35, 0.2], "radius": 0.03, "dynamic": true, "density": 1200,
+        "constraint": {"free": ["y", "rx"]}})"))
+                  .find("obstacles[0].constraint.free[1]: a 2D body moves in x, y and rz only, got \"rx\""),
+              std::string::npos);
+    EXPECT_NE(sceneProblems(planarScene(R"({"type": "box", "min": [0.3, 0.2], "max": [0.35, 0.25], "dynamic": true, "density": 500,
+        "angular_velocity": [1, 2]})"))
+                  .find("obstacles[0].angular_velocity: must be a number"),
+              std::string::npos);
+    EXPECT_NE(sceneProblems(planarScene(R"({"type": "polygon", "points": [[0.4, 0.2], [0.5, 0.2], [0.5, 0.3]], "dynamic": true, "density": 500})"))
+                  .find("obstacles[0].dynamic: a polygon cannot be a floating body"),
+              std::string::npos);
     std::string gaugeZ = planarScene("");
     gaugeZ.replace(gaugeZ.find("\"x\": 0.3"), 8, "\"x\": 0.3, \"z\": 0.1");
     EXPECT_NE(sceneProblems(gaugeZ).find("gauges[0].z: a 2D scene has no z"), std::string::npos);

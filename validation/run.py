@@ -21,6 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bodies  # noqa: E402
 import dam_break  # noqa: E402
 import multifluid  # noqa: E402
 import viscous  # noqa: E402
@@ -42,6 +43,7 @@ CASES = [
     ("rayleigh_taylor", multifluid.rayleigh_taylor),
     ("interfacial_wave", multifluid.interfacial_wave),
     ("regular_waves", waves.flume),
+    ("sinking_cylinder", bodies.sinking_cylinder),
 ]
 
 

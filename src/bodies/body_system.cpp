@@ -19,7 +19,8 @@
 /// its ξ per touching probe is state, saved with the bodies. The stiffness k per probe defaults to
 /// k = m g / (N_face · 1e-3 · size): a body resting on a face (N_face probes) sinks 0.1 % of its
 /// size; c = 2ζ √(k m / N_face) makes that face critically damped at ζ = 1. At rest the springs
-/// carry exactly the weight. The sub-step keeps ω τ ≤ 0.3 for ω² = 2 N_face k / m.
+/// carry exactly the weight. The sub-step keeps ω τ ≤ 0.3 for ω² = 2 N_face k / m, and the face's damping
+/// rate 2 ζ ω τ ≤ 0.6 (ω² = N_face k / m) for an overdamped contact (ζ > 1.4).
 
 #include <tide/bodies.hpp>
 
@@ -328,7 +329,10 @@ void BodySystem::step(double dt, std::span<const glm::dvec3> forces, std::span<c
         tau0 = std::min(tau0, b.stableSubstep());
         if (b.def().contact.enabled) {
             const ContactParams& p = impl_->params[i];
-            tau0 = std::min(tau0, 0.3 / std::sqrt(2.0 * p.probesPerFace * p.stiffness / b.massProperties().mass));
+            const double omega = std::sqrt(p.probesPerFace * p.stiffness / b.massProperties().mass);  // a face's
+            tau0 = std::min(tau0, 0.3 / (std::sqrt(2.0) * omega));
+            // The face's damping explicit: its rate 2 ζ ω times τ kept ≤ 0.6 (binds above ζ = 1.4).
+            tau0 = std::min(tau0, 0.3 / (p.dampingRatio * omega));
         }
     }
     const int steps = std::max(1, static_cast<int>(std::ceil(dt / tau0)));

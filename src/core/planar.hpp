@@ -88,7 +88,9 @@ inline void validateObstacleDimensions(ObstacleDef& o, int dimensions) {
         throw std::invalid_argument(std::string("obstacle.type: \"") +
                                     (o.shape == Shape::Sphere ? "sphere" : o.shape == Shape::Cylinder ? "cylinder" : "mesh") +
                                     "\" is a 3D shape; a 2D world takes box, plane, circle and polygon");
-    if (o.dynamics) throw std::invalid_argument("obstacle.dynamic: floating bodies are 3D only");
+    // A 2D body is a box or circle: per metre of width, as the loads are (World::addBody).
+    if (o.dynamics && o.shape == Shape::Polygon)
+        throw std::invalid_argument("obstacle.dynamic: a polygon cannot be a floating body; in 2D a body is a box or a circle");
     if (o.shape == Shape::Box) {
         o.min.z = -kPlanarBoxHalfDepth;
         o.max.z = kPlanarBoxHalfDepth;

@@ -110,7 +110,11 @@ bool readBodyDynamics(Reader& r, const json& j, const std::string& path, float s
     if (j.contains("center_of_mass"))
         if (auto v = r.vec3(j, "center_of_mass", path, false)) body.centerOfMass = *v * scale;
     if (auto v = r.vec3(j, "velocity", path, false)) body.velocity = *v * scale;
-    if (auto v = r.vec3(j, "angular_velocity", path, false)) body.angularVelocity = *v;
+    if (r.dimensions == 2) {  // about z, the only axis a 2D body turns about
+        if (auto v = r.number(j, "angular_velocity", path, false, -1e6, 1e6)) body.angularVelocity = {0.0f, 0.0f, static_cast<float>(*v)};
+    } else if (auto v = r.vec3(j, "angular_velocity", path, false)) {
+        body.angularVelocity = *v;
+    }
     if (j.contains("constraint") && r.object(j.at("constraint"), join(path, "constraint"), {"free"})) {
         const std::string where = join(path, "constraint.free");
         const json& free = j.at("constraint").contains("free") ? j.at("constraint").at("free") : json();
@@ -121,6 +125,8 @@ bool readBodyDynamics(Reader& r, const json& j, const std::string& path, float s
             for (std::size_t k = 0; k < free.size(); ++k) {
                 if (!free[k].is_string() || std::find(kAxes.begin(), kAxes.end(), free[k].get<std::string>()) == kAxes.end())
                     r.fail(indexed(where, k), "unknown axis " + show(free[k]) + ": one of x, y, z, rx, ry, rz");
+                else if (r.dimensions == 2 && free[k] != "x" && free[k] != "y" && free[k] != "rz")
+                    r.fail(indexed(where, k), "a 2D body moves in x, y and rz only, got " + show(free[k]));
                 else
                     body.freeAxes.push_back(free[k].get<std::string>());
             }
@@ -162,8 +168,8 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
                                        (*type == "circle" ? "sphere" : "mesh") + "\")");
         return std::nullopt;
     }
-    if (planar && j.is_object() && j.contains("dynamic")) {
-        r.fail(join(path, "dynamic"), "floating bodies are 3D only");
+    if (planar && *type == "polygon" && j.is_object() && j.contains("dynamic")) {
+        r.fail(join(path, "dynamic"), "a polygon cannot be a floating body; in 2D a body is a \"box\" or a \"circle\"");
         return std::nullopt;
     }
     if (*type == "box") {
@@ -191,7 +197,7 @@ std::optional<ObstacleDef> readObstacle(Reader& r, const json& j, const std::str
         o.radius = static_cast<float>(*radius) * scale;
         o.length = static_cast<float>(*length) * scale;
     } else if (*type == "circle") {
-        if (!r.object(j, path, {"type", "center", "radius", "motion", "name", "load_reference"})) return std::nullopt;
+        if (!r.object(j, path, {"type", "center", "radius", "motion", "name", "load_reference", "dynamic", "density", "mass", "center_of_mass", "velocity", "angular_velocity", "constraint", "moorings"})) return std::nullopt;
         const auto c = r.vec3(j, "center", path, true);
         const auto radius = r.number(j, "radius", path, true, 0.0, 1e6, true);
         if (!c || !radius) return std::nullopt;
