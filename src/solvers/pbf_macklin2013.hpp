@@ -71,7 +71,7 @@ private:
     std::vector<float> weightedVolume2_; ///< w_j V_j²
     std::vector<float> pairFactor_;      ///< W'(r)/r of the spiky kernel per pair slot
     std::vector<float> pairCorrection_;  ///< s_corr V̄ per pair slot, m⁵
-    std::vector<glm::vec3> wallPosition_;  ///< x_b + Δt v_b (moving boundaries)
+    std::vector<glm::vec4> wallRows_;    ///< (x_b, 0), x_b + Δt v_b where boundaries move
     std::vector<glm::vec3> vorticity_;   ///< ω_i
     XsphFilter xsph_;
     double lastDt_ = 0.0;                ///< s; the last step's, for the share of a shorter one
