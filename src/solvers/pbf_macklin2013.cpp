@@ -229,8 +229,11 @@ double PbfMacklin2013::step(StepContext& ctx) {
         p.pressure[i] = toPressure * lambda_[i];
     });
     if (ctx.solver.vorticity > 0.0f) confineVorticity(ctx, dt, ctx.solver.vorticity);
+    // XSPH in SIMD lanes over rows (x_j, m_j), with rows_ (free now) for (v_j, ρ_j)
+    resizeScratch(massRows_, n);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) { massRows_[i] = glm::vec4(p.position[i], p.mass[i]); });
     xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.poly6(), ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : kDefaultXsph,
-                ctx.threads);
+                ctx.threads, rows_, massRows_.data());
     ctx.lap(Phase::NonPressureForces);
     ctx.pressureIterations = iterations;
     ctx.divergenceIterations = 0;

@@ -71,6 +71,7 @@ private:
     std::vector<float> weightedVolume2_; ///< w_j V_j²
     std::vector<float> pairFactor_;      ///< W'(r)/r of the spiky kernel per pair slot
     std::vector<float> pairCorrection_;  ///< s_corr V̄ per pair slot, m⁵
+    std::vector<glm::vec4> massRows_;    ///< (x_j, m_j) for XSPH's SIMD sums
     std::vector<glm::vec4> wallRows_;    ///< (x_b, 0), x_b + Δt v_b where boundaries move
     std::vector<glm::vec3> vorticity_;   ///< ω_i
     XsphFilter xsph_;
