@@ -71,11 +71,6 @@ void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
     const float restRatio = w.value(ctx.particleSpacing) * invWdq;
     const float restTensile = restRatio * restRatio * restRatio * restRatio;
     const float vb = ctx.boundary.volume;
-    // (x_j, V_j) and w_j V_j², packed: one load per neighbour for each.
-    parallelFor(p.size(), ctx.threads, [&](std::uint32_t j) {
-        rows_[j] = glm::vec4(p.position[j], volume_[j]);
-        weightedVolume2_[j] = weight_[j] * volume_[j] * volume_[j];
-    });
     pbf_sums::LambdaKernel kernel{w};
     kernel.h = h;
     kernel.h2 = h2;
@@ -106,22 +101,26 @@ void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
         const float denominator = weight_[i] * glm::dot(own, own) + weightedSquares + epsilon;
         lambda_[i] = c > 0.0f ? -c / denominator : 0.0f;  // eq. 11, unilateral
         if (last) p.density[i] = ctx.materials[p.material[i]].restDensity * (c + 1.0f);
+        correctionRows_[i] = glm::vec4(xi, lambda_[i] * vi);
     });
 }
 
-void PbfMacklin2013::computeCorrection(StepContext& ctx) {
+void PbfMacklin2013::applyCorrection(StepContext& ctx, float share) {
     ParticleStore& p = ctx.particles;
     const float cap = kMaxCorrection * ctx.supportRadius;
-    // (x_j, λ_j V_j), packed.
-    parallelFor(p.size(), ctx.threads, [&](std::uint32_t j) { rows_[j] = glm::vec4(p.position[j], lambda_[j] * volume_[j]); });
+    // Reads the rows (x_j, λ_j V_j) the λ pass left; moves only i itself.
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const std::uint64_t slot = ctx.neighbors.offset(i);
-        const glm::vec3 dx = pbf_sums::correctionSum(pair_sums::Neighbors(ctx.neighbors.of(i)), rows_.data(), p.position[i],
-                                                     rows_[i].w, pairFactor_.data() + slot, pairCorrection_.data() + slot,
-                                                     ctx.periodic);  // eq. 14
-        const glm::vec3 correction = weight_[i] * (dx + lambda_[i] * wallGradient_[i]);
+        const glm::vec4 own = correctionRows_[i];
+        const glm::vec3 dx = pbf_sums::correctionSum(pair_sums::Neighbors(ctx.neighbors.of(i)), correctionRows_.data(),
+                                                     glm::vec3(own), own.w, pairFactor_.data() + slot,
+                                                     pairCorrection_.data() + slot, ctx.periodic);  // eq. 14
+        glm::vec3 correction = weight_[i] * (dx + lambda_[i] * wallGradient_[i]);
         const float length = glm::length(correction);
-        correction_[i] = length > cap ? (cap / length) * correction : correction;
+        if (length > cap) correction *= cap / length;
+        p.position[i] += share * correction;
+        moved_[i] += share * correction;
+        rows_[i] = glm::vec4(p.position[i], volume_[i]);  // for the next λ pass
     });
 }
 
@@ -171,7 +170,7 @@ double PbfMacklin2013::step(StepContext& ctx) {
     resizeScratch(weight_, n);
     resizeScratch(lambda_, n);
     resizeScratch(wallGradient_, n);
-    resizeScratch(correction_, n);
+    resizeScratch(correctionRows_, n);
     resizeScratch(rows_, n);
     resizeScratch(weightedVolume2_, n);
     // and pair_sums::kPadding zeros after the last list, which the correction pass reads past
@@ -189,6 +188,9 @@ double PbfMacklin2013::step(StepContext& ctx) {
         p.acceleration[i] = ctx.gravity;
         p.velocity[i] += dt * ctx.gravity;
         p.position[i] += dt * p.velocity[i];
+        // (x_j, V_j) and w_j V_j² for the λ pass, packed: one load per neighbour for each
+        rows_[i] = glm::vec4(p.position[i], volume_[i]);
+        weightedVolume2_[i] = weight_[i] * volume_[i] * volume_[i];
     });
     // (x_b, 0), moved to the step's end where boundaries move
     const auto nb = static_cast<std::uint32_t>(ctx.boundary.position.size());
@@ -211,11 +213,7 @@ double PbfMacklin2013::step(StepContext& ctx) {
     lastDt_ = dtStep;
     for (int it = 0; it < iterations; ++it) {
         solveLambda(ctx, epsilon, it == iterations - 1);
-        computeCorrection(ctx);
-        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            p.position[i] += share * correction_[i];
-            moved_[i] += share * correction_[i];
-        });
+        applyCorrection(ctx, share);
     }
     ctx.lap(Phase::PressureSolve);
     // Lines 21–24: velocities from the positions, then vorticity confinement and XSPH.

@@ -43,6 +43,7 @@ public:
     [[nodiscard]] std::string_view name() const override { return "pbf"; }
     [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::Smoothing; }
     [[nodiscard]] bool usesWallPressure() const override { return false; }
+    [[nodiscard]] bool recordsWallLoads() const override { return false; }
     double step(StepContext& ctx) override;
     [[nodiscard]] std::vector<double> carriedState() const override { return {lastDt_}; }
     bool restoreCarriedState(std::span<const double> state) override {
@@ -54,8 +55,9 @@ public:
 private:
     /// λ_i (eq. 11) at the current predicted positions, and each pair's W'(r)/r and s_corr.
     void solveLambda(StepContext& ctx, float epsilon, bool last);
-    /// Δx_i (eq. 14) from the λ and pair factors of solveLambda, into correction_.
-    void computeCorrection(StepContext& ctx);
+    /// Δx_i (eq. 14) from the λ and pair factors of solveLambda, `share` of it added to the
+    /// positions (and to moved_), which it packs for the next λ pass.
+    void applyCorrection(StepContext& ctx, float share);
     /// ε of eq. 11: a fraction of the denominator of a particle inside the rest lattice.
     [[nodiscard]] float relaxation(const StepContext& ctx);
     /// Vorticity confinement (eq. 15–16): v_i += Δt ε (N × ω_i).
@@ -66,8 +68,8 @@ private:
     std::vector<float> weight_;          ///< w_i = ρ0_ref/ρ0_i: inverse mass relative to material 0's (one lattice volume)
     std::vector<float> lambda_;          ///< λ_i, m²
     std::vector<glm::vec3> wallGradient_;  ///< Σ_b V_b ∇W_ib
-    std::vector<glm::vec3> correction_;  ///< Δx_i of one iteration
-    std::vector<glm::vec4> rows_;        ///< (x_j, V_j) for solveLambda, (x_j, λ_j V_j) for computeCorrection
+    std::vector<glm::vec4> rows_;        ///< (x_j, V_j) for solveLambda (and XSPH's scratch)
+    std::vector<glm::vec4> correctionRows_;  ///< (x_j, λ_j V_j) for applyCorrection
     std::vector<float> weightedVolume2_; ///< w_j V_j²
     std::vector<float> pairFactor_;      ///< W'(r)/r of the spiky kernel per pair slot
     std::vector<float> pairCorrection_;  ///< s_corr V̄ per pair slot, m⁵
