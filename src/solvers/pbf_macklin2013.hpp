@@ -24,6 +24,8 @@
 /// the spline's gradient vanishes as r → 0, and a particle pressed onto a wall or a neighbour
 /// then had a large C over a tiny ∇C, a correction of a spacing per iteration (measured: the
 /// seed's tank diverged at 0.6 s, 30 m/s, with the spline's gradient).
+/// The iterations' pair loops run in SIMD lanes (solvers/pbf_pair_sums.hpp): two passes an
+/// iteration, the λ pass (which leaves each pair's gradient factor and s_corr) and the correction.
 /// The neighbour lists are the World's, found at the step's start positions: with steps
 /// where particles move a fraction of h, the pairs that come into range meanwhile start at
 /// the kernel's edge, where W is near 0.
