@@ -5,7 +5,11 @@
 // process: on a loaded machine, wall time / CPU time is the share of the cores it got), and
 // whether the layers ended in the order of their densities.
 //
-//   tide_live_bench [--seconds S] [--threads T] [--only light_water|many_materials] [--solver NAME]
+// With --trace FILE, one CSV row a frame (demo, frame, wall ms, CPU ms of this process, particles,
+// mean compression and max speed after it, and the wall ms of each phase of World's phase clock in that frame): what a frame's cost is
+// made of, and what spikes (a frame whose wall time spikes at the same CPU time waited for a core).
+//
+//   tide_live_bench [--seconds S] [--threads T] [--only light_water|many_materials] [--solver NAME] [--trace FILE]
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -49,7 +53,7 @@ float heightQuantile(const tide::Fluid& fluid, tide::MaterialIndex m, double q) 
 int main(int argc, char** argv) {
     double seconds = 8.0;
     int threads = 2;
-    std::string only, solver = "pbf";
+    std::string only, solver = "pbf", tracePath;
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
         if (i + 1 >= argc) {
@@ -60,8 +64,9 @@ int main(int argc, char** argv) {
         else if (flag == "--threads") threads = std::atoi(argv[++i]);
         else if (flag == "--only") only = argv[++i];
         else if (flag == "--solver") solver = argv[++i];
+        else if (flag == "--trace") tracePath = argv[++i];
         else {
-            std::fprintf(stderr, "usage: %s [--seconds S] [--threads T] [--only NAME] [--solver NAME]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--seconds S] [--threads T] [--only NAME] [--solver NAME] [--trace FILE]\n", argv[0]);
             return 2;
         }
     }
@@ -93,6 +98,15 @@ int main(int argc, char** argv) {
              fluid.addPoint(glm::vec3(0, -20, -20), glm::vec3(20, -10, 0), glm::vec3(0));
          }},
     };
+    FILE* trace = nullptr;
+    if (!tracePath.empty()) {
+        trace = std::fopen(tracePath.c_str(), "w");
+        if (trace == nullptr) {
+            std::fprintf(stderr, "%s: --trace %s: cannot write\n", argv[0], tracePath.c_str());
+            return 2;
+        }
+        std::fprintf(trace, "demo,frame,ms,cpu_ms,particles,compression,max_speed,neighbor_ms,density_ms,pressure_ms,nonpressure_ms,integration_ms\n");
+    }
     std::printf("%-15s %9s %6s %6s %9s %9s %9s %7s %9s %s\n", "demo", "particles", "sim_s", "wall_s", "sim/wall",
                 "median_ms", "max_ms", "max/med", "cpu_s/sim", "layers (world units: water median, others' 10th/90th pct)");
     for (const Demo& demo : demos) {
@@ -106,10 +120,21 @@ int main(int argc, char** argv) {
         const double cpu0 = cpuSeconds();
         const auto start = std::chrono::steady_clock::now();
         for (int f = 0; f < frames; ++f) {
+            const tide::PhaseSeconds before = fluid.world().stats().phaseSeconds;
+            const double frameCpu0 = trace != nullptr ? cpuSeconds() : 0.0;
             const auto t0 = std::chrono::steady_clock::now();
             fluid.step(frame);
             (void)fluid.getPosData();  // what a renderer reads every frame
             costs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+            if (trace != nullptr) {
+                const tide::PhaseSeconds& after = fluid.world().stats().phaseSeconds;
+                std::fprintf(trace, "%s,%d,%.3f,%.3f,%u,%.5f,%.3f,%.3f,%.3f,%.3f,%.3f,%.3f\n", demo.name, f, 1e3 * costs.back(),
+                             1e3 * (cpuSeconds() - frameCpu0), fluid.getPointCounts(), fluid.world().stats().meanCompression,
+                             fluid.world().stats().maxSpeed, 1e3 * (after.neighborSearch - before.neighborSearch),
+                             1e3 * (after.density - before.density), 1e3 * (after.pressureSolve - before.pressureSolve),
+                             1e3 * (after.nonPressureForces - before.nonPressureForces),
+                             1e3 * (after.integration - before.integration));
+            }
         }
         const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         const double cpu = cpuSeconds() - cpu0;
@@ -130,5 +155,6 @@ int main(int argc, char** argv) {
         std::printf(" | escaped %u\n", fluid.world().countEscapedParticles());
         std::fflush(stdout);
     }
+    if (trace != nullptr) std::fclose(trace);
     return 0;
 }

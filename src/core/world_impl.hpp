@@ -240,10 +240,13 @@ struct World::Impl {
     /// The container's walls, a shell as deep as the support, between wallsMin and wallsMax
     /// on the lattice as it is now.
     /// The step's loads from the pairs the solver recorded (boundary particles where the step
-    /// started), added to the running average.
-    void sumLoads(double dt) {
-        sumSolidLoads(wallLoads, boundaryNeighbors, boundary, particles.size(), dt, solidReferences(time), periodic,
-                      threads, lastLoads);
+    /// started), added to the running average; without `recorded` (the solver records none), 0.
+    void sumLoads(double dt, bool recorded) {
+        if (recorded)
+            sumSolidLoads(wallLoads, boundaryNeighbors, boundary, particles.size(), dt, solidReferences(time), periodic,
+                          threads, lastLoads);
+        else
+            lastLoads.assign(solids.size(), SolidLoad{});
         loadImpulse.resize(solids.size());
         for (std::size_t s = 0; s < solids.size(); ++s) {
             loadImpulse[s].pressureForce += dt * lastLoads[s].pressureForce;

@@ -7,6 +7,8 @@
 
 #include "core/parallel.hpp"
 #include "core/scratch_resize.hpp"
+#include "solvers/pair_sums.hpp"
+#include "solvers/pbf_pair_sums.hpp"
 
 namespace tide {
 
@@ -68,89 +70,59 @@ void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
     // 1 % of k there pushed a coasting jet's layers apart by ~0.1 mm in 1 s, unevenly).
     const float restRatio = w.value(ctx.particleSpacing) * invWdq;
     const float restTensile = restRatio * restRatio * restRatio * restRatio;
-    const glm::vec3* wallX = ctx.boundary.moving ? wallPosition_.data() : ctx.boundary.position.data();
     const float vb = ctx.boundary.volume;
-    // (x_j, V_j) and w_j V_j², packed: one load per neighbour for each.
-    parallelFor(p.size(), ctx.threads, [&](std::uint32_t j) {
-        rows_[j] = glm::vec4(p.position[j], volume_[j]);
-        weightedVolume2_[j] = weight_[j] * volume_[j] * volume_[j];
-    });
-    withPairVector(ctx.periodic, [&](auto pairVector) {
+    pbf_sums::LambdaKernel kernel{w};
+    kernel.h = h;
+    kernel.h2 = h2;
+    kernel.spikyGradient = spiky.gradNorm;
+    kernel.invWdq = invWdq;
+    kernel.restTensile = restTensile;
+    kernel.tensileScale = tensileScale;
     parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
         const glm::vec3 xi = p.position[i];
         const float vi = volume_[i];
-        const auto list = ctx.neighbors.of(i);
         const std::uint64_t slot = ctx.neighbors.offset(i);
-        float* factor = pairFactor_.data() + slot;
-        float* tensile = pairCorrection_.data() + slot;
-        float sumW = self, weightedSquares = 0.0f;
-        glm::vec3 gradient(0.0f);
-        for (std::size_t k = 0; k < list.size(); ++k) {
-            const std::uint32_t j = list[k];
-            const glm::vec4 row = rows_[j];
-            const glm::vec3 d = pairVector(xi, glm::vec3(row));
-            const float r2 = glm::dot(d, d);
-            float f = 0.0f, s = 0.0f;
-            if (r2 < h2) {
-                const float r = std::sqrt(r2);
-                const float wij = w.value(r);
-                sumW += wij;
-                f = r > 0.0f ? spiky.gradientScale(r) / r : 0.0f;
-                const glm::vec3 g = f * d;
-                gradient += g;
-                weightedSquares += weightedVolume2_[j] * glm::dot(g, g);
-                const float ratio = wij * invWdq;
-                const float ratio2 = ratio * ratio;
-                // eq. 13, n = 4, times the pair's mean volume (eq. 14)
-                s = 0.5f * (vi + row.w) * tensileScale * std::max(ratio2 * ratio2 - restTensile, 0.0f);
-            }
-            factor[k] = f;
-            tensile[k] = s;
-        }
-        float wallSum = 0.0f;
-        glm::vec3 wallGradient(0.0f);
-        for (const std::uint32_t b : ctx.boundaryNeighbors.of(i)) {
-            const glm::vec3 d = ctx.delta(xi, wallX[b]);
-            const float r2 = glm::dot(d, d);
-            if (r2 >= h2) continue;
-            const float r = std::sqrt(r2);
-            wallSum += w.value(r);
-            if (r > 0.0f) wallGradient += (spiky.gradientScale(r) / r) * d;
-        }
-        wallGradient_[i] = vb * wallGradient;
+        const pbf_sums::LambdaSums sums =
+            pbf_sums::lambdaSums(pair_sums::Neighbors(ctx.neighbors.of(i)), rows_.data(), weightedVolume2_.data(), xi, vi,
+                                 kernel, ctx.periodic, pairFactor_.data() + slot, pairCorrection_.data() + slot);
+        const float sumW = self + sums.kernelSum;
+        const glm::vec3 gradient = sums.gradient;
+        const float weightedSquares = sums.weightedSquares;
+        const auto wallList = ctx.boundaryNeighbors.of(i);
+        const glm::vec4 walls =
+            pbf_sums::wallSums(pair_sums::Neighbors(NeighborSpan(wallList.data(), static_cast<std::uint32_t>(wallList.size()))),
+                               wallRows_.data(), xi, kernel, ctx.periodic);
+        const float wallSum = walls.w;
+        wallGradient_[i] = vb * glm::vec3(walls);
         const float c = vi * sumW + vb * wallSum - 1.0f;  // eq. 1 over ρ0_i
         // ∇_i C_i = V_i Σ_j ∇W_ij + Σ_b V_b ∇W_ib; ∇_j C_i = −V_i ∇W_ij (here V_j: the pair's
         // correction moves j by its own volume's share, eq. 14).
         const glm::vec3 own = vi * gradient + wallGradient_[i];
         const float denominator = weight_[i] * glm::dot(own, own) + weightedSquares + epsilon;
-        lambda_[i] = c > 0.0f ? -c / denominator : 0.0f;  // eq. 11, unilateral
+        // eq. 11, unilateral: −c where c > 0, else +0 (also for NaN), without a branch (about
+        // half the particles are compressed, and a branch on it mispredicts)
+        lambda_[i] = std::min(0.0f, -c) / denominator;
         if (last) p.density[i] = ctx.materials[p.material[i]].restDensity * (c + 1.0f);
-    });
+        correctionRows_[i] = glm::vec4(xi, lambda_[i] * vi);
     });
 }
 
-void PbfMacklin2013::computeCorrection(StepContext& ctx) {
+void PbfMacklin2013::applyCorrection(StepContext& ctx, float share) {
     ParticleStore& p = ctx.particles;
     const float cap = kMaxCorrection * ctx.supportRadius;
-    // (x_j, λ_j V_j), packed.
-    parallelFor(p.size(), ctx.threads, [&](std::uint32_t j) { rows_[j] = glm::vec4(p.position[j], lambda_[j] * volume_[j]); });
-    withPairVector(ctx.periodic, [&](auto pairVector) {
-        parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
-            const glm::vec3 xi = p.position[i];
-            const auto list = ctx.neighbors.of(i);
-            const std::uint64_t slot = ctx.neighbors.offset(i);
-            const float* factor = pairFactor_.data() + slot;
-            const float* tensile = pairCorrection_.data() + slot;
-            const float li = rows_[i].w;
-            glm::vec3 dx(0.0f);
-            for (std::size_t k = 0; k < list.size(); ++k) {
-                const glm::vec4 row = rows_[list[k]];
-                dx += ((li + row.w + tensile[k]) * factor[k]) * pairVector(xi, glm::vec3(row));  // eq. 14
-            }
-            const glm::vec3 correction = weight_[i] * (dx + lambda_[i] * wallGradient_[i]);
-            const float length = glm::length(correction);
-            correction_[i] = length > cap ? (cap / length) * correction : correction;
-        });
+    // Reads the rows (x_j, λ_j V_j) the λ pass left; moves only i itself.
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+        const std::uint64_t slot = ctx.neighbors.offset(i);
+        const glm::vec4 own = correctionRows_[i];
+        const glm::vec3 dx = pbf_sums::correctionSum(pair_sums::Neighbors(ctx.neighbors.of(i)), correctionRows_.data(),
+                                                     glm::vec3(own), own.w, pairFactor_.data() + slot,
+                                                     pairCorrection_.data() + slot, ctx.periodic);  // eq. 14
+        glm::vec3 correction = weight_[i] * (dx + lambda_[i] * wallGradient_[i]);
+        const float length = glm::length(correction);
+        if (length > cap) correction *= cap / length;
+        p.position[i] += share * correction;
+        moved_[i] += share * correction;
+        rows_[i] = glm::vec4(p.position[i], volume_[i]);  // for the next λ pass
     });
 }
 
@@ -200,11 +172,14 @@ double PbfMacklin2013::step(StepContext& ctx) {
     resizeScratch(weight_, n);
     resizeScratch(lambda_, n);
     resizeScratch(wallGradient_, n);
-    resizeScratch(correction_, n);
+    resizeScratch(correctionRows_, n);
     resizeScratch(rows_, n);
     resizeScratch(weightedVolume2_, n);
-    resizeScratch(pairFactor_, ctx.neighbors.slotCount());
-    resizeScratch(pairCorrection_, ctx.neighbors.slotCount());
+    // and pair_sums::kPadding zeros after the last list, which the correction pass reads past
+    for (std::vector<float>* pairs : {&pairFactor_, &pairCorrection_}) {
+        resizeScratch(*pairs, ctx.neighbors.slotCount() + pair_sums::kPadding);
+        std::fill(pairs->end() - pair_sums::kPadding, pairs->end(), 0.0f);
+    }
     const float referenceDensity = ctx.materials.empty() ? 1000.0f : ctx.materials[0].restDensity;
     // Algorithm 1, lines 1–4: external forces and the predicted positions.
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -215,14 +190,17 @@ double PbfMacklin2013::step(StepContext& ctx) {
         p.acceleration[i] = ctx.gravity;
         p.velocity[i] += dt * ctx.gravity;
         p.position[i] += dt * p.velocity[i];
+        // (x_j, V_j) and w_j V_j² for the λ pass, packed: one load per neighbour for each
+        rows_[i] = glm::vec4(p.position[i], volume_[i]);
+        weightedVolume2_[i] = weight_[i] * volume_[i] * volume_[i];
     });
-    if (ctx.boundary.moving) {
-        const auto nb = static_cast<std::uint32_t>(ctx.boundary.position.size());
-        resizeScratch(wallPosition_, nb);
-        parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
-            wallPosition_[b] = ctx.boundary.position[b] + dt * ctx.boundary.velocity[b];
-        });
-    }
+    // (x_b, 0), moved to the step's end where boundaries move
+    const auto nb = static_cast<std::uint32_t>(ctx.boundary.position.size());
+    resizeScratch(wallRows_, nb);
+    const bool moving = ctx.boundary.moving;
+    parallelFor(nb, ctx.threads, [&](std::uint32_t b) {
+        wallRows_[b] = glm::vec4(moving ? ctx.boundary.position[b] + dt * ctx.boundary.velocity[b] : ctx.boundary.position[b], 0.0f);
+    });
     ctx.lap(Phase::Integration);
     // Lines 8–19: Jacobi iterations on the density constraints.
     const float epsilon = relaxation(ctx);
@@ -237,11 +215,7 @@ double PbfMacklin2013::step(StepContext& ctx) {
     lastDt_ = dtStep;
     for (int it = 0; it < iterations; ++it) {
         solveLambda(ctx, epsilon, it == iterations - 1);
-        computeCorrection(ctx);
-        parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            p.position[i] += share * correction_[i];
-            moved_[i] += share * correction_[i];
-        });
+        applyCorrection(ctx, share);
     }
     ctx.lap(Phase::PressureSolve);
     // Lines 21–24: velocities from the positions, then vorticity confinement and XSPH.
@@ -255,8 +229,11 @@ double PbfMacklin2013::step(StepContext& ctx) {
         p.pressure[i] = toPressure * lambda_[i];
     });
     if (ctx.solver.vorticity > 0.0f) confineVorticity(ctx, dt, ctx.solver.vorticity);
+    // XSPH in SIMD lanes over rows (x_j, m_j), with rows_ (free now) for (v_j, ρ_j)
+    resizeScratch(massRows_, n);
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) { massRows_[i] = glm::vec4(p.position[i], p.mass[i]); });
     xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.poly6(), ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : kDefaultXsph,
-                ctx.threads);
+                ctx.threads, rows_, massRows_.data());
     ctx.lap(Phase::NonPressureForces);
     ctx.pressureIterations = iterations;
     ctx.divergenceIterations = 0;

@@ -24,6 +24,8 @@
 /// the spline's gradient vanishes as r → 0, and a particle pressed onto a wall or a neighbour
 /// then had a large C over a tiny ∇C, a correction of a spacing per iteration (measured: the
 /// seed's tank diverged at 0.6 s, 30 m/s, with the spline's gradient).
+/// The iterations' pair loops run in SIMD lanes (solvers/pbf_pair_sums.hpp): two passes an
+/// iteration, the λ pass (which leaves each pair's gradient factor and s_corr) and the correction.
 /// The neighbour lists are the World's, found at the step's start positions: with steps
 /// where particles move a fraction of h, the pairs that come into range meanwhile start at
 /// the kernel's edge, where W is near 0.
@@ -43,6 +45,7 @@ public:
     [[nodiscard]] std::string_view name() const override { return "pbf"; }
     [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::Smoothing; }
     [[nodiscard]] bool usesWallPressure() const override { return false; }
+    [[nodiscard]] bool recordsWallLoads() const override { return false; }
     double step(StepContext& ctx) override;
     [[nodiscard]] std::vector<double> carriedState() const override { return {lastDt_}; }
     bool restoreCarriedState(std::span<const double> state) override {
@@ -54,8 +57,9 @@ public:
 private:
     /// λ_i (eq. 11) at the current predicted positions, and each pair's W'(r)/r and s_corr.
     void solveLambda(StepContext& ctx, float epsilon, bool last);
-    /// Δx_i (eq. 14) from the λ and pair factors of solveLambda, into correction_.
-    void computeCorrection(StepContext& ctx);
+    /// Δx_i (eq. 14) from the λ and pair factors of solveLambda, `share` of it added to the
+    /// positions (and to moved_), which it packs for the next λ pass.
+    void applyCorrection(StepContext& ctx, float share);
     /// ε of eq. 11: a fraction of the denominator of a particle inside the rest lattice.
     [[nodiscard]] float relaxation(const StepContext& ctx);
     /// Vorticity confinement (eq. 15–16): v_i += Δt ε (N × ω_i).
@@ -66,12 +70,13 @@ private:
     std::vector<float> weight_;          ///< w_i = ρ0_ref/ρ0_i: inverse mass relative to material 0's (one lattice volume)
     std::vector<float> lambda_;          ///< λ_i, m²
     std::vector<glm::vec3> wallGradient_;  ///< Σ_b V_b ∇W_ib
-    std::vector<glm::vec3> correction_;  ///< Δx_i of one iteration
-    std::vector<glm::vec4> rows_;        ///< (x_j, V_j) for solveLambda, (x_j, λ_j V_j) for computeCorrection
+    std::vector<glm::vec4> rows_;        ///< (x_j, V_j) for solveLambda (and XSPH's scratch)
+    std::vector<glm::vec4> correctionRows_;  ///< (x_j, λ_j V_j) for applyCorrection
     std::vector<float> weightedVolume2_; ///< w_j V_j²
     std::vector<float> pairFactor_;      ///< W'(r)/r of the spiky kernel per pair slot
     std::vector<float> pairCorrection_;  ///< s_corr V̄ per pair slot, m⁵
-    std::vector<glm::vec3> wallPosition_;  ///< x_b + Δt v_b (moving boundaries)
+    std::vector<glm::vec4> massRows_;    ///< (x_j, m_j) for XSPH's SIMD sums
+    std::vector<glm::vec4> wallRows_;    ///< (x_b, 0), x_b + Δt v_b where boundaries move
     std::vector<glm::vec3> vorticity_;   ///< ω_i
     XsphFilter xsph_;
     double lastDt_ = 0.0;                ///< s; the last step's, for the share of a shorter one

@@ -124,6 +124,9 @@ public:
     [[nodiscard]] virtual ViscosityModel defaultViscosity() const { return ViscosityModel::Morris1997; }
     /// Whether step() reads StepContext::boundaryFluidNeighbors (built only then).
     [[nodiscard]] virtual bool usesWallPressure() const { return true; }
+    /// Whether step() writes StepContext::loads (otherwise the fluid's loads on solids are 0
+    /// and the World neither clears nor sums the per-pair records).
+    [[nodiscard]] virtual bool recordsWallLoads() const { return true; }
     /// Returns the length of the step taken, s.
     virtual double step(StepContext& ctx) = 0;
     /// Scalars the solver carries from one step to the next (not per particle: those live in
