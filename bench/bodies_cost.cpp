@@ -73,7 +73,7 @@ int main(int argc, char** argv) {
         std::sort(perStep[w].begin(), perStep[w].end());
         median[w] = perStep[w][perStep[w].size() / 2];
         std::printf("%-24s %6zu particles  %.4f s/step (median of %d rounds)  %.1f pressure iterations/step\n", names[w],
-                    worlds[w]->particles().size(), median[w], rounds, double(iterations[w]) / (rounds * steps));
+                    static_cast<std::size_t>(worlds[w]->particles().size()), median[w], rounds, double(iterations[w]) / (rounds * steps));
     }
     std::printf("loads: %+.1f %% per step; three floating bodies: %+.1f %% per step (against loads off)\n",
                 100.0 * (median[1] / median[0] - 1.0), 100.0 * (median[2] / median[0] - 1.0));

@@ -30,8 +30,8 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     w.pairTables.build(w.materials.size(), w.pairs);
     ctx.pairs = &w.pairTables;
     const bool loads = w.def.loads || w.bodySystem;  // bodies move by their loads
-    const bool wallLoads = loads && w.solver->recordsWallLoads();
-    if (wallLoads) {
+    const bool recordedWallLoads = loads && w.solver->recordsWallLoads();
+    if (recordedWallLoads) {
         w.wallLoads.reset(w.boundaryNeighbors.slotCount());
         ctx.loads = &w.wallLoads;
     }
@@ -46,7 +46,7 @@ double World::Impl::step(double maxDt, Clock clockMode) {
         w.zones->holdEnd(w.particles, w.time, dt, held, w.threads);
         clock.lap(Phase::Coupling);
     }
-    if (loads) w.sumLoads(dt, wallLoads);
+    if (loads) w.sumLoads(dt, recordedWallLoads);
     // Bodies move over the step under its load (weak coupling: the fluid saw them where they
     // were at its start); the strays are then pushed out of them where they end.
     if (w.bodySystem && !held) w.stepBodies(dt);
