@@ -22,6 +22,18 @@ struct WorldDistribution final : StepSharing {
     void refreshGhosts(std::span<float> field) const override { halo.refresh(field, *comm); }
     void refreshGhosts(std::span<glm::vec3> field) const override { halo.refresh(field, *comm); }
     float maxOverRanks(float local) const override { return static_cast<float>(comm->max(static_cast<double>(local))); }
+    std::span<const std::uint8_t> ghosts() const override { return ghost; }
+    void sumOverRanks(std::span<comm::ExactSum> sums) const override {
+        constexpr std::size_t kCounters = std::tuple_size_v<comm::ExactSum::Counters>;
+        std::vector<std::int64_t> counters(sums.size() * kCounters);
+        for (std::size_t s = 0; s < sums.size(); ++s) {
+            const comm::ExactSum::Counters c = sums[s].counters();
+            std::copy(c.begin(), c.end(), counters.begin() + static_cast<std::ptrdiff_t>(s * kCounters));
+        }
+        comm->sumInPlace(counters);
+        for (std::size_t s = 0; s < sums.size(); ++s)
+            sums[s] = comm::ExactSum::fromCounters(std::span<const std::int64_t, kCounters>(counters.data() + s * kCounters, kCounters));
+    }
 };
 
 namespace {
@@ -34,7 +46,9 @@ void refuse(const std::string& what) {
 
 void distributeWorld(World& world, comm::Communicator& comm) {
     World::Impl& w = *world.impl_;
-    if (w.def.solver.method != "wcsph") refuse("solver.method \"" + w.def.solver.method + "\" (wcsph can)");
+    const std::string& method = w.def.solver.method;
+    if (method != "wcsph" && method != "dfsph" && method != "pcisph")
+        refuse("solver.method \"" + method + "\" (wcsph, dfsph and pcisph can)");
     if (!w.emitters.empty()) refuse("an emitter");
     if (w.bodySystem) refuse("a floating body");
     if (!w.paddles.empty()) refuse("a wave maker");

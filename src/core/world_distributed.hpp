@@ -7,7 +7,7 @@
 /// owners, takes new ghosts two cells deep, orders everything by (cell, id) and anchors the
 /// neighbour grid at the domain's corner, so that every particle meets its neighbours in the
 /// same order, and sums the same, on any number of ranks; the solver refreshes ghost fields
-/// through StepContext::sharing. What is split so far: wcsph with walls and fixed obstacles;
+/// through StepContext::sharing. What is split so far: wcsph, dfsph and pcisph with walls and fixed obstacles;
 /// anything else is refused when the World is distributed.
 
 #include <tide/particles.hpp>

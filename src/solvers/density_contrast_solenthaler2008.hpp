@@ -37,25 +37,6 @@
 
 namespace tide {
 
-/// The convergence measure of a solve with several materials: the largest over materials of
-/// the mean of error(i)/ρ0_i over that material's particles, so that every material, not
-/// only their mix, ends within the tolerance (a light layer is a minority of the particles
-/// and the mean over all of them hid a heavy layer 23 % over it, measured at 5:1 in dfsph).
-/// Serial, so it does not depend on the thread count.
-template <class Context, class Error>
-[[nodiscard]] double worstMaterialMean(const Context& ctx, Error&& error) {
-    const ParticleStore& p = ctx.particles;
-    std::vector<double> sum(ctx.materials.size(), 0.0), count(ctx.materials.size(), 0.0);
-    for (std::uint32_t i = 0; i < p.size(); ++i) {
-        sum[p.material[i]] += error(i) / ctx.materials[p.material[i]].restDensity;
-        count[p.material[i]] += 1.0;
-    }
-    double worst = 0.0;
-    for (std::size_t m = 0; m < sum.size(); ++m)
-        if (count[m] > 0.0) worst = std::max(worst, sum[m] / count[m]);
-    return worst;
-}
-
 /// Per-step factors of the density-contrast formulation.
 class DensityContrast {
 public:

@@ -8,6 +8,7 @@
 
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
+#include "solvers/owned_sums.hpp"
 #include "solvers/shifting_lind2012.hpp"
 #include "solvers/sph_sums.hpp"
 #include "solvers/time_step.hpp"
@@ -238,11 +239,8 @@ void DfsphBender2017::recordWallImpulses(StepContext& ctx, std::uint32_t i, floa
 
 double DfsphBender2017::meanRelativeError(const StepContext& ctx, Solve solve) const {
     const ParticleStore& p = ctx.particles;
-    if (!contrast_.uniform()) return worstMaterialMean(ctx, [&](std::uint32_t i) { return errorLeft(i, solve); });
-    const double sum = parallelSum(p.size(), ctx.threads, [&](std::uint32_t i) {
-        return static_cast<double>(errorLeft(i, solve) / ctx.materials[p.material[i]].restDensity);
-    });
-    return sum / std::max<double>(1.0, p.size());
+    if (!contrast_.uniform()) return owned_sums::worstMaterialMean(ctx, [&](std::uint32_t i) { return errorLeft(i, solve); });
+    return owned_sums::mean(ctx, [&](std::uint32_t i) { return errorLeft(i, solve) / ctx.materials[p.material[i]].restDensity; });
 }
 
 int DfsphBender2017::solveDivergence(StepContext& ctx) {
@@ -263,7 +261,10 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
     // apply first: a pair pass less a step (SolverDef::divergenceWarmStart).
     const bool uniform = contrast_.uniform();
     auto push = [&](bool apply) {
-        if (apply) applyPressure(ctx, {});
+        if (apply) {
+            applyPressure(ctx, {});
+            ctx.refreshGhosts(std::span<glm::vec3>(p.velocity));
+        }
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             positionK_[i] = glm::vec4(p.velocity[i], (uniform ? 1.0f : p.mass[i]) / p.density[i]);
         });
@@ -288,6 +289,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
             k_[i] = weight * error_[i] * alpha_[i];  // κᵛ·Δt (eq. 15)
             p.warmDivergence[i] += k_[i];
         });
+        ctx.refreshGhosts(k_);  // a ghost's error and α miss neighbours
         push(true);
     }
     return iteration;
@@ -318,6 +320,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
         wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa, scaledKappa_, ctx.threads), ctx.threads, dt,
                      boundaryK_);
         applyPressure(ctx, boundaryK_);
+        ctx.refreshGhosts(std::span<glm::vec3>(p.velocity));  // a ghost misses part of the wall's κ
     };
     // Warm start (§4.3) with half of the last step's κ: the full κ drifts within the
     // tolerance band (the mean-error test accepts an over-pressured, slightly expanded tank)
@@ -397,6 +400,8 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
             k_[i] = (updated - kappa[i]) * dt;
             kappa[i] = updated;
         });
+        ctx.refreshGhosts(k_);  // a ghost's error and α miss neighbours
+        ctx.refreshGhosts(kappa);
         push();
     }
     densityConverged_ = converged;
@@ -426,6 +431,7 @@ double DfsphBender2017::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
     prepare(ctx);  // sets contrast_
+    ctx.refreshGhosts(std::span<float>(p.density));  // α, the forces and the solves read neighbours' densities
     const bool uniform = contrast_.uniform();
     positionK_.resize(n);
     computeAlpha(ctx);
@@ -499,6 +505,7 @@ double DfsphBender2017::step(StepContext& ctx) {
         xsph_.apply(p, ctx.neighbors, ctx.periodic, ctx.poly6(),
                     ctx.solver.xsph >= 0.0f ? ctx.solver.xsph : 0.01f, ctx.threads, positionK_,
                     uniform ? positionMass_.data() : mixedRows_.data());
+        ctx.refreshGhosts(std::span<glm::vec3>(p.velocity));
         ctx.lap(Phase::NonPressureForces);
         densityIterations += solveDensity(ctx, dtTry, static_cast<float>(driftTime));
         ctx.lap(Phase::PressureSolve);

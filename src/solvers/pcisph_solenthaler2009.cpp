@@ -7,6 +7,7 @@
 
 #include "core/kernels.hpp"
 #include "core/parallel.hpp"
+#include "solvers/owned_sums.hpp"
 #include "solvers/sph_sums.hpp"
 #include "solvers/time_step.hpp"
 
@@ -106,10 +107,8 @@ void PcisphSolenthaler2009::predictCompression(StepContext& ctx, float dt) {
 
 double PcisphSolenthaler2009::meanRelativeCompression(const StepContext& ctx) const {
     const ParticleStore& p = ctx.particles;
-    if (!contrast_.uniform()) return worstMaterialMean(ctx, [&](std::uint32_t i) { return error_[i]; });
-    double sum = 0.0;
-    for (std::uint32_t i = 0; i < p.size(); ++i) sum += error_[i] / ctx.materials[p.material[i]].restDensity;
-    return sum / std::max<double>(1.0, p.size());
+    if (!contrast_.uniform()) return owned_sums::worstMaterialMean(ctx, [&](std::uint32_t i) { return error_[i]; });
+    return owned_sums::mean(ctx, [&](std::uint32_t i) { return error_[i] / ctx.materials[p.material[i]].restDensity; });
 }
 
 void PcisphSolenthaler2009::computePressureAccel(StepContext& ctx) {
@@ -153,6 +152,8 @@ void PcisphSolenthaler2009::computePressureAccel(StepContext& ctx) {
         }
         pressureAccel_[i] = -sum;
     });
+    // Split among processes: a ghost near a wall misses part of the wall's pressure sum.
+    ctx.refreshGhosts(std::span<glm::vec3>(pressureAccel_));
 }
 
 PcisphSolenthaler2009::Solve PcisphSolenthaler2009::solvePressure(StepContext& ctx, float dt) {
@@ -181,6 +182,7 @@ PcisphSolenthaler2009::Solve PcisphSolenthaler2009::solvePressure(StepContext& c
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
             pressure_[i] = std::max(pressure_[i] + relaxation * delta_[i] * residual_[i], 0.0f);
         });
+        ctx.refreshGhosts(std::span<float>(pressure_));  // a ghost's δ and residual miss neighbours
         computePressureAccel(ctx);
     }
     return solve;
@@ -190,6 +192,7 @@ double PcisphSolenthaler2009::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
     sph::computeDensities(ctx);
+    ctx.refreshGhosts(std::span<float>(p.density));  // the forces read neighbours' densities
     contrast_.prepare(p, ctx.materials, ctx.threads);
     wall_.prepare(ctx.boundary, ctx.boundaryFluidNeighbors, ctx.boundaryNearFluid, p.position, ctx.periodic, ctx.gravity, ctx.kernel(),
                   ctx.threads, contrast_.scale());

@@ -14,6 +14,7 @@
 #include <tide/particles.hpp>
 
 #include "boundary/boundary_particles.hpp"
+#include "comm/exact_sum.hpp"
 #include "core/kernels.hpp"
 #include "core/material_pairs.hpp"
 #include "core/phase_clock.hpp"
@@ -35,6 +36,10 @@ public:
     virtual void refreshGhosts(std::span<float> field) const = 0;
     virtual void refreshGhosts(std::span<glm::vec3> field) const = 0;
     [[nodiscard]] virtual float maxOverRanks(float local) const = 0;
+    /// 1 for each ghost in the store, 0 for a particle this rank owns.
+    [[nodiscard]] virtual std::span<const std::uint8_t> ghosts() const = 0;
+    /// Replaces each accumulator by its sum over every rank (collective; one exchange).
+    virtual void sumOverRanks(std::span<comm::ExactSum> sums) const = 0;
 };
 
 /// Everything a solver sees during one step.

@@ -63,7 +63,10 @@ inline void computeDensities(StepContext& ctx, const glm::vec4* positionMass = n
 inline float addNonPressureForces(StepContext& ctx, std::vector<glm::vec3>& accel) {
     accel.assign(ctx.particles.size(), ctx.gravity);
     addViscosity(ctx, accel);
-    return addSurfaceTension(ctx, accel);
+    const float tension = addSurfaceTension(ctx, accel);
+    // Split among processes: the ghosts' copies are summed from their owners' neighbourhoods.
+    ctx.refreshGhosts(std::span<glm::vec3>(accel));
+    return ctx.maxOverRanks(tension);
 }
 
 /// Largest kinematic viscosity μ/ρ0 the model uses, m²/s (for the viscous dt limit).
@@ -119,7 +122,8 @@ inline float pressureSpeedStep(const StepContext& ctx) {
     const ParticleStore& p = ctx.particles;
     const float g = glm::length(ctx.gravity);
     constexpr float none = std::numeric_limits<float>::infinity();
-    if (!(g > 0.0f) || p.size() == 0) return none;
+    // A process may hold no particles: it still takes part in the maxima over processes.
+    if (!(g > 0.0f)) return none;
     const glm::vec3 down = ctx.gravity / g;
     const float deepest = parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) { return glm::dot(p.position[i], down); },
                                       -std::numeric_limits<float>::max());
@@ -127,8 +131,8 @@ inline float pressureSpeedStep(const StepContext& ctx) {
                                       -std::numeric_limits<float>::max());
     // The density solve's κ: the divergence solve's impulses (impacts) are left out.
     const float head = parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) { return p.warmKappa[i]; }, 0.0f);
-    const float depth = deepest + highest + ctx.particleSpacing;  // particle centres lie half a spacing inside
-    const float speed2 = std::min(g * depth, head);
+    const float depth = ctx.maxOverRanks(deepest) + ctx.maxOverRanks(highest) + ctx.particleSpacing;  // particle centres lie half a spacing inside
+    const float speed2 = std::min(g * depth, ctx.maxOverRanks(head));
     return speed2 > 0.0f ? kPressureCourant * ctx.particleSpacing / std::sqrt(speed2) : none;
 }
 
@@ -136,9 +140,9 @@ inline float pressureSpeedStep(const StepContext& ctx) {
 /// not let a fast paddle or obstacle pass a particle spacing in one step.
 inline float maxSpeed(const StepContext& ctx) {
     const ParticleStore& p = ctx.particles;
-    return std::max(std::sqrt(parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) {
+    return std::max(ctx.maxOverRanks(std::sqrt(parallelMax(p.size(), ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.velocity[i], p.velocity[i]);
-    }, 0.0f)), ctx.boundary.maxSpeed);
+    }, 0.0f))), ctx.boundary.maxSpeed);
 }
 
 }  // namespace tide::sph

@@ -91,7 +91,7 @@ double WcsphBecker2007::step(StepContext& ctx) {
     const float maxAccel = ctx.maxOverRanks(std::sqrt(parallelMax(n, ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.acceleration[i], p.acceleration[i]);
     }, 0.0f)));
-    const double dt = stableTimeStep(ctx.solver, ctx.particleSpacing, ctx.soundSpeed, ctx.maxOverRanks(sph::maxSpeed(ctx)), maxAccel,
+    const double dt = stableTimeStep(ctx.solver, ctx.particleSpacing, ctx.soundSpeed, sph::maxSpeed(ctx), maxAccel,
                                      sph::maxKinematicViscosity(ctx),
                                      ctx.maxDt);
     const auto dtf = static_cast<float>(dt);
