@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
@@ -46,6 +47,18 @@ float heightQuantile(const tide::Fluid& fluid, tide::MaterialIndex m, double q) 
     if (y.empty()) return 0.0f;
     std::sort(y.begin(), y.end());
     return y[std::min(y.size() - 1, static_cast<std::size_t>(q * static_cast<double>(y.size())))];
+}
+
+/// FNV-1a of the particles' positions' bytes: whether a change to the code changed the result.
+std::uint64_t stateHash(const tide::Fluid& fluid) {
+    std::uint64_t hash = 1469598103934665603ull;
+    const tide::Point* points = fluid.getPointBuf();
+    for (unsigned i = 0; i < fluid.getPointCounts(); ++i) {
+        unsigned char bytes[sizeof(points[i].pos)];
+        std::memcpy(bytes, &points[i].pos, sizeof bytes);
+        for (const unsigned char b : bytes) hash = (hash ^ b) * 1099511628211ull;
+    }
+    return hash;
 }
 
 }  // namespace
@@ -152,7 +165,8 @@ int main(int argc, char** argv) {
             std::printf(" | %g kg/m3 %s %.2f (%s)", rho, light ? "p10" : "p90", q,
                         (light ? q > water : q < water) ? "ok" : "NOT LAYERED");
         }
-        std::printf(" | escaped %u\n", fluid.world().countEscapedParticles());
+        std::printf(" | escaped %u | state %016llx\n", fluid.world().countEscapedParticles(),
+                    static_cast<unsigned long long>(stateHash(fluid)));
         std::fflush(stdout);
     }
     if (trace != nullptr) std::fclose(trace);

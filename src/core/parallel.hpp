@@ -29,6 +29,19 @@ void parallelFor(std::uint32_t n, int threads, F&& f) {
     for (std::int64_t i = 0; i < static_cast<std::int64_t>(n); ++i) f(static_cast<std::uint32_t>(i));
 }
 
+/// Call f(first, last) for the blocks [first, last) of `block` consecutive indices (the last
+/// block shorter) that cover [0, n), on `threads` threads: for passes that work a block at a time.
+template <class F>
+void parallelForBlocks(std::uint32_t n, std::uint32_t block, int threads, F&& f) {
+    const std::uint32_t blocks = (n + block - 1) / block;
+    const bool parallel = threads > 1 && n >= kParallelGrain;
+#pragma omp parallel for schedule(static) num_threads(threads) if (parallel)
+    for (std::int64_t b = 0; b < static_cast<std::int64_t>(blocks); ++b) {
+        const auto first = static_cast<std::uint32_t>(b) * block;
+        f(first, std::min(n, first + block));
+    }
+}
+
 /// max over i in [0, n) of f(i), or `init` when n == 0.
 template <class F>
 float parallelMax(std::uint32_t n, int threads, F&& f, float init = -std::numeric_limits<float>::infinity()) {

@@ -33,6 +33,8 @@ constexpr float kDefaultXsph = 0.2f;
 /// (16,000 particles at 2.5 cm, 8.3 ms steps) ran away to 30 m/s within 0.7 s without a cap,
 /// 7 m/s spray with 0.2 h, 3–4 m/s (the dam break's own speeds) with 0.1 h.
 constexpr float kMaxCorrection = 0.1f;
+/// Particles a pass hands the pair loops at a time (pbf_pair_sums.hpp).
+constexpr std::uint32_t kBlock = 64;
 }  // namespace
 
 float PbfMacklin2013::relaxation(const StepContext& ctx) {
@@ -58,7 +60,7 @@ float PbfMacklin2013::relaxation(const StepContext& ctx) {
     return kRelaxation * latticeDenominator_;
 }
 
-void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
+void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool lastIteration) {
     ParticleStore& p = ctx.particles;
     const kernels::SmoothingKernel w = ctx.kernel();
     const kernels::Spiky spiky(ctx.supportRadius, ctx.dimensions);
@@ -78,32 +80,30 @@ void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool last) {
     kernel.invWdq = invWdq;
     kernel.restTensile = restTensile;
     kernel.tensileScale = tensileScale;
-    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
-        const glm::vec3 xi = p.position[i];
-        const float vi = volume_[i];
-        const std::uint64_t slot = ctx.neighbors.offset(i);
-        const pbf_sums::LambdaSums sums =
-            pbf_sums::lambdaSums(pair_sums::Neighbors(ctx.neighbors.of(i)), rows_.data(), weightedVolume2_.data(), xi, vi,
-                                 kernel, ctx.periodic, pairFactor_.data() + slot, pairCorrection_.data() + slot);
-        const float sumW = self + sums.kernelSum;
-        const glm::vec3 gradient = sums.gradient;
-        const float weightedSquares = sums.weightedSquares;
-        const auto wallList = ctx.boundaryNeighbors.of(i);
-        const glm::vec4 walls =
-            pbf_sums::wallSums(pair_sums::Neighbors(NeighborSpan(wallList.data(), static_cast<std::uint32_t>(wallList.size()))),
-                               wallRows_.data(), xi, kernel, ctx.periodic);
-        const float wallSum = walls.w;
-        wallGradient_[i] = vb * glm::vec3(walls);
-        const float c = vi * sumW + vb * wallSum - 1.0f;  // eq. 1 over ρ0_i
-        // ∇_i C_i = V_i Σ_j ∇W_ij + Σ_b V_b ∇W_ib; ∇_j C_i = −V_i ∇W_ij (here V_j: the pair's
-        // correction moves j by its own volume's share, eq. 14).
-        const glm::vec3 own = vi * gradient + wallGradient_[i];
-        const float denominator = weight_[i] * glm::dot(own, own) + weightedSquares + epsilon;
-        // eq. 11, unilateral: −c where c > 0, else +0 (also for NaN), without a branch (about
-        // half the particles are compressed, and a branch on it mispredicts)
-        lambda_[i] = std::min(0.0f, -c) / denominator;
-        if (last) p.density[i] = ctx.materials[p.material[i]].restDensity * (c + 1.0f);
-        correctionRows_[i] = glm::vec4(xi, lambda_[i] * vi);
+    parallelForBlocks(p.size(), kBlock, ctx.threads, [&](std::uint32_t first, std::uint32_t last) {
+        pbf_sums::LambdaSums fluid[kBlock];
+        glm::vec4 walls[kBlock];
+        pbf_sums::lambdaSumsOfRange(ctx.neighbors, first, last, rows_.data(), weightedVolume2_.data(), kernel, ctx.periodic,
+                                    pairFactor_.data(), pairCorrection_.data(), fluid);
+        pbf_sums::wallSumsOfRange(ctx.boundaryNeighbors, first, last, wallRows_.data(), rows_.data(), kernel, ctx.periodic,
+                                  walls);
+        for (std::uint32_t i = first; i < last; ++i) {
+            const pbf_sums::LambdaSums& sums = fluid[i - first];
+            const glm::vec3 xi = p.position[i];
+            const float vi = volume_[i];
+            const float sumW = self + sums.kernelSum;
+            wallGradient_[i] = vb * glm::vec3(walls[i - first]);
+            const float c = vi * sumW + vb * walls[i - first].w - 1.0f;  // eq. 1 over ρ0_i
+            // ∇_i C_i = V_i Σ_j ∇W_ij + Σ_b V_b ∇W_ib; ∇_j C_i = −V_i ∇W_ij (here V_j: the pair's
+            // correction moves j by its own volume's share, eq. 14).
+            const glm::vec3 own = vi * sums.gradient + wallGradient_[i];
+            const float denominator = weight_[i] * glm::dot(own, own) + sums.weightedSquares + epsilon;
+            // eq. 11, unilateral: −c where c > 0, else +0 (also for NaN), without a branch (about
+            // half the particles are compressed, and a branch on it mispredicts)
+            lambda_[i] = std::min(0.0f, -c) / denominator;
+            if (lastIteration) p.density[i] = ctx.materials[p.material[i]].restDensity * (c + 1.0f);
+            correctionRows_[i] = glm::vec4(xi, lambda_[i] * vi);
+        }
     });
 }
 
@@ -111,18 +111,18 @@ void PbfMacklin2013::applyCorrection(StepContext& ctx, float share) {
     ParticleStore& p = ctx.particles;
     const float cap = kMaxCorrection * ctx.supportRadius;
     // Reads the rows (x_j, λ_j V_j) the λ pass left; moves only i itself.
-    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
-        const std::uint64_t slot = ctx.neighbors.offset(i);
-        const glm::vec4 own = correctionRows_[i];
-        const glm::vec3 dx = pbf_sums::correctionSum(pair_sums::Neighbors(ctx.neighbors.of(i)), correctionRows_.data(),
-                                                     glm::vec3(own), own.w, pairFactor_.data() + slot,
-                                                     pairCorrection_.data() + slot, ctx.periodic);  // eq. 14
-        glm::vec3 correction = weight_[i] * (dx + lambda_[i] * wallGradient_[i]);
-        const float length = glm::length(correction);
-        if (length > cap) correction *= cap / length;
-        p.position[i] += share * correction;
-        moved_[i] += share * correction;
-        rows_[i] = glm::vec4(p.position[i], volume_[i]);  // for the next λ pass
+    parallelForBlocks(p.size(), kBlock, ctx.threads, [&](std::uint32_t first, std::uint32_t last) {
+        glm::vec3 sums[kBlock];
+        pbf_sums::correctionSumsOfRange(ctx.neighbors, first, last, correctionRows_.data(), pairFactor_.data(),
+                                        pairCorrection_.data(), ctx.periodic, sums);  // eq. 14
+        for (std::uint32_t i = first; i < last; ++i) {
+            glm::vec3 correction = weight_[i] * (sums[i - first] + lambda_[i] * wallGradient_[i]);
+            const float length = glm::length(correction);
+            if (length > cap) correction *= cap / length;
+            p.position[i] += share * correction;
+            moved_[i] += share * correction;
+            rows_[i] = glm::vec4(p.position[i], volume_[i]);  // for the next λ pass
+        }
     });
 }
 

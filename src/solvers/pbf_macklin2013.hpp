@@ -56,7 +56,7 @@ public:
 
 private:
     /// λ_i (eq. 11) at the current predicted positions, and each pair's W'(r)/r and s_corr.
-    void solveLambda(StepContext& ctx, float epsilon, bool last);
+    void solveLambda(StepContext& ctx, float epsilon, bool lastIteration);
     /// Δx_i (eq. 14) from the λ and pair factors of solveLambda, `share` of it added to the
     /// positions (and to moved_), which it packs for the next λ pass.
     void applyCorrection(StepContext& ctx, float share);

@@ -147,7 +147,7 @@ HWY_INLINE void StoreBlock(V v, float* out, std::size_t left) {
 }
 
 template <bool Periodic, bool Offsets, bool Wendland>
-LambdaSums LambdaSumsT(const pair_sums::Neighbors& neighbors, const glm::vec4* rows, const float* weightedVolume2,
+HWY_INLINE LambdaSums LambdaSumsT(const pair_sums::Neighbors& neighbors, const glm::vec4* rows, const float* weightedVolume2,
                        const glm::vec3& xi, float vi, const LambdaKernel& kernel, const PeriodicBox& box, float* factor,
                        float* tensile) {
     const D d;
@@ -192,7 +192,7 @@ LambdaSums LambdaSumsT(const pair_sums::Neighbors& neighbors, const glm::vec4* r
 }
 
 template <bool Periodic, bool Offsets, bool Wendland>
-glm::vec4 WallSumsT(const pair_sums::Neighbors& neighbors, const glm::vec4* rows, const glm::vec3& xi,
+HWY_INLINE glm::vec4 WallSumsT(const pair_sums::Neighbors& neighbors, const glm::vec4* rows, const glm::vec3& xi,
                     const LambdaKernel& kernel, const PeriodicBox& box) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z);
@@ -217,7 +217,7 @@ glm::vec4 WallSumsT(const pair_sums::Neighbors& neighbors, const glm::vec4* rows
 }
 
 template <bool Periodic, bool Offsets>
-glm::vec3 CorrectionSumT(const pair_sums::Neighbors& neighbors, const glm::vec4* rows, const glm::vec3& xi, float li,
+HWY_INLINE glm::vec3 CorrectionSumT(const pair_sums::Neighbors& neighbors, const glm::vec4* rows, const glm::vec3& xi, float li,
                          const float* factor, const float* tensile, const PeriodicBox& box) {
     const D d;
     const V xx = hn::Set(d, xi.x), xy = hn::Set(d, xi.y), xz = hn::Set(d, xi.z), own = hn::Set(d, li);
@@ -268,6 +268,76 @@ glm::vec3 CorrectionSumImpl(const pair_sums::Neighbors& neighbors, const glm::ve
                    : CorrectionSumT<false, false>(neighbors, rows, xi, li, factor, tensile, box);
 }
 
+// The ranges: the template variant chosen once a block; a particle's list holds offsets or
+// (kWide) indices, chosen per particle.
+template <bool Periodic, bool Wendland>
+void LambdaSumsOfRangeT(const NeighborList& list, std::uint32_t first, std::uint32_t last, const glm::vec4* rows,
+                        const float* weightedVolume2, const LambdaKernel& kernel, const PeriodicBox& box, float* factor,
+                        float* tensile, LambdaSums* out) {
+    for (std::uint32_t i = first; i < last; ++i) {
+        const pair_sums::Neighbors neighbors(list.of(i));
+        const std::uint64_t slot = list.offset(i);
+        const glm::vec4 own = rows[i];
+        out[i - first] =
+            neighbors.offset != nullptr
+                ? LambdaSumsT<Periodic, true, Wendland>(neighbors, rows, weightedVolume2, glm::vec3(own), own.w, kernel, box,
+                                                        factor + slot, tensile + slot)
+                : LambdaSumsT<Periodic, false, Wendland>(neighbors, rows, weightedVolume2, glm::vec3(own), own.w, kernel, box,
+                                                         factor + slot, tensile + slot);
+    }
+}
+void LambdaSumsOfRangeImpl(const NeighborList& list, std::uint32_t first, std::uint32_t last, const glm::vec4* rows,
+                           const float* weightedVolume2, const LambdaKernel& kernel, const PeriodicBox& box, float* factor,
+                           float* tensile, LambdaSums* out) {
+    const bool wendland = kernel.density.shape == KernelShape::WendlandC2;
+    if (box.any)
+        wendland ? LambdaSumsOfRangeT<true, true>(list, first, last, rows, weightedVolume2, kernel, box, factor, tensile, out)
+                 : LambdaSumsOfRangeT<true, false>(list, first, last, rows, weightedVolume2, kernel, box, factor, tensile, out);
+    else
+        wendland ? LambdaSumsOfRangeT<false, true>(list, first, last, rows, weightedVolume2, kernel, box, factor, tensile, out)
+                 : LambdaSumsOfRangeT<false, false>(list, first, last, rows, weightedVolume2, kernel, box, factor, tensile, out);
+}
+
+template <bool Periodic, bool Wendland>
+void WallSumsOfRangeT(const CrossNeighborList& walls, std::uint32_t first, std::uint32_t last, const glm::vec4* wallRows,
+                      const glm::vec4* rows, const LambdaKernel& kernel, const PeriodicBox& box, glm::vec4* out) {
+    for (std::uint32_t i = first; i < last; ++i) {
+        const auto list = walls.of(i);
+        out[i - first] = list.empty() ? glm::vec4(0.0f)
+                                      : WallSumsT<Periodic, false, Wendland>(
+                                            pair_sums::Neighbors(NeighborSpan(list.data(), static_cast<std::uint32_t>(list.size()))),
+                                            wallRows, glm::vec3(rows[i]), kernel, box);
+    }
+}
+void WallSumsOfRangeImpl(const CrossNeighborList& walls, std::uint32_t first, std::uint32_t last, const glm::vec4* wallRows,
+                         const glm::vec4* rows, const LambdaKernel& kernel, const PeriodicBox& box, glm::vec4* out) {
+    const bool wendland = kernel.density.shape == KernelShape::WendlandC2;
+    if (box.any)
+        wendland ? WallSumsOfRangeT<true, true>(walls, first, last, wallRows, rows, kernel, box, out)
+                 : WallSumsOfRangeT<true, false>(walls, first, last, wallRows, rows, kernel, box, out);
+    else
+        wendland ? WallSumsOfRangeT<false, true>(walls, first, last, wallRows, rows, kernel, box, out)
+                 : WallSumsOfRangeT<false, false>(walls, first, last, wallRows, rows, kernel, box, out);
+}
+
+template <bool Periodic>
+void CorrectionSumsOfRangeT(const NeighborList& list, std::uint32_t first, std::uint32_t last, const glm::vec4* rows,
+                            const float* factor, const float* tensile, const PeriodicBox& box, glm::vec3* out) {
+    for (std::uint32_t i = first; i < last; ++i) {
+        const pair_sums::Neighbors neighbors(list.of(i));
+        const std::uint64_t slot = list.offset(i);
+        const glm::vec4 own = rows[i];
+        out[i - first] = neighbors.offset != nullptr
+                             ? CorrectionSumT<Periodic, true>(neighbors, rows, glm::vec3(own), own.w, factor + slot, tensile + slot, box)
+                             : CorrectionSumT<Periodic, false>(neighbors, rows, glm::vec3(own), own.w, factor + slot, tensile + slot, box);
+    }
+}
+void CorrectionSumsOfRangeImpl(const NeighborList& list, std::uint32_t first, std::uint32_t last, const glm::vec4* rows,
+                               const float* factor, const float* tensile, const PeriodicBox& box, glm::vec3* out) {
+    box.any ? CorrectionSumsOfRangeT<true>(list, first, last, rows, factor, tensile, box, out)
+            : CorrectionSumsOfRangeT<false>(list, first, last, rows, factor, tensile, box, out);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace tide::pbf_sums
 HWY_AFTER_NAMESPACE();
@@ -278,6 +348,9 @@ namespace tide::pbf_sums {
 HWY_EXPORT(LambdaSumsImpl);
 HWY_EXPORT(WallSumsImpl);
 HWY_EXPORT(CorrectionSumImpl);
+HWY_EXPORT(LambdaSumsOfRangeImpl);
+HWY_EXPORT(WallSumsOfRangeImpl);
+HWY_EXPORT(CorrectionSumsOfRangeImpl);
 
 namespace {
 /// The chosen target's loops, looked up once (as pair_sums.cpp: a dispatch per call costs).
@@ -285,11 +358,15 @@ struct Targets {
     decltype(&HWY_STATIC_DISPATCH(LambdaSumsImpl)) lambdaSums;
     decltype(&HWY_STATIC_DISPATCH(WallSumsImpl)) wallSums;
     decltype(&HWY_STATIC_DISPATCH(CorrectionSumImpl)) correctionSum;
+    decltype(&HWY_STATIC_DISPATCH(LambdaSumsOfRangeImpl)) lambdaSumsOfRange;
+    decltype(&HWY_STATIC_DISPATCH(WallSumsOfRangeImpl)) wallSumsOfRange;
+    decltype(&HWY_STATIC_DISPATCH(CorrectionSumsOfRangeImpl)) correctionSumsOfRange;
 };
 Targets chooseTargets() {
     hwy::GetChosenTarget().Update(hwy::SupportedTargets());
     return Targets{&HWY_DYNAMIC_DISPATCH(LambdaSumsImpl), &HWY_DYNAMIC_DISPATCH(WallSumsImpl),
-                   &HWY_DYNAMIC_DISPATCH(CorrectionSumImpl)};
+                   &HWY_DYNAMIC_DISPATCH(CorrectionSumImpl), &HWY_DYNAMIC_DISPATCH(LambdaSumsOfRangeImpl),
+                   &HWY_DYNAMIC_DISPATCH(WallSumsOfRangeImpl), &HWY_DYNAMIC_DISPATCH(CorrectionSumsOfRangeImpl)};
 }
 const Targets& targets() {
     static const Targets chosen = chooseTargets();
@@ -309,6 +386,19 @@ glm::vec4 wallSums(const pair_sums::Neighbors& neighbors, const glm::vec4* rows,
 glm::vec3 correctionSum(const pair_sums::Neighbors& neighbors, const glm::vec4* rows, const glm::vec3& xi, float li,
                         const float* factor, const float* tensile, const PeriodicBox& box) {
     return targets().correctionSum(neighbors, rows, xi, li, factor, tensile, box);
+}
+void lambdaSumsOfRange(const NeighborList& list, std::uint32_t first, std::uint32_t last, const glm::vec4* rows,
+                       const float* weightedVolume2, const LambdaKernel& kernel, const PeriodicBox& box, float* factor,
+                       float* tensile, LambdaSums* out) {
+    targets().lambdaSumsOfRange(list, first, last, rows, weightedVolume2, kernel, box, factor, tensile, out);
+}
+void wallSumsOfRange(const CrossNeighborList& walls, std::uint32_t first, std::uint32_t last, const glm::vec4* wallRows,
+                     const glm::vec4* rows, const LambdaKernel& kernel, const PeriodicBox& box, glm::vec4* out) {
+    targets().wallSumsOfRange(walls, first, last, wallRows, rows, kernel, box, out);
+}
+void correctionSumsOfRange(const NeighborList& list, std::uint32_t first, std::uint32_t last, const glm::vec4* rows,
+                           const float* factor, const float* tensile, const PeriodicBox& box, glm::vec3* out) {
+    targets().correctionSumsOfRange(list, first, last, rows, factor, tensile, box, out);
 }
 
 }  // namespace tide::pbf_sums

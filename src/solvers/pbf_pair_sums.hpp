@@ -15,6 +15,7 @@
 
 #include "core/kernels.hpp"
 #include "core/periodic_box.hpp"
+#include "neighbors/neighbor_list.hpp"
 #include "solvers/pair_sums.hpp"
 
 namespace tide::pbf_sums {
@@ -54,5 +55,24 @@ glm::vec4 wallSums(const pair_sums::Neighbors& neighbors, const glm::vec4* rows,
 /// factors and s_corr of lambdaSums, read kPadding past the list (ignored).
 glm::vec3 correctionSum(const pair_sums::Neighbors& neighbors, const glm::vec4* rows, const glm::vec3& xi, float li,
                         const float* factor, const float* tensile, const PeriodicBox& box);
+
+// The passes call the loops a block of consecutive particles at a time: one dispatch and one
+// set of broadcast constants a block instead of a particle (a particle's sums are ~4 blocks of
+// lanes, and the call around them cost about as much as one). The sums are the same, bit for bit.
+
+/// lambdaSums of particles first … last − 1 of `list` to out[i − first], with (x_i, V_i) = rows[i]
+/// and the pair arrays factor and tensile indexed by list.offset(i) + k.
+void lambdaSumsOfRange(const NeighborList& list, std::uint32_t first, std::uint32_t last, const glm::vec4* rows,
+                       const float* weightedVolume2, const LambdaKernel& kernel, const PeriodicBox& box, float* factor,
+                       float* tensile, LambdaSums* out);
+
+/// wallSums of particles first … last − 1 over their lists in `walls` to out[i − first], with x_i
+/// from rows[i]; zero, without a call, where a particle has no boundary neighbour (most do not).
+void wallSumsOfRange(const CrossNeighborList& walls, std::uint32_t first, std::uint32_t last, const glm::vec4* wallRows,
+                     const glm::vec4* rows, const LambdaKernel& kernel, const PeriodicBox& box, glm::vec4* out);
+
+/// correctionSum of particles first … last − 1 of `list` to out[i − first], with (x_i, l_i) = rows[i].
+void correctionSumsOfRange(const NeighborList& list, std::uint32_t first, std::uint32_t last, const glm::vec4* rows,
+                           const float* factor, const float* tensile, const PeriodicBox& box, glm::vec3* out);
 
 }  // namespace tide::pbf_sums
