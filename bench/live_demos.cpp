@@ -10,6 +10,7 @@
 // made of, and what spikes (a frame whose wall time spikes at the same CPU time waited for a core).
 //
 //   tide_live_bench [--seconds S] [--threads T] [--only light_water|many_materials] [--solver NAME] [--trace FILE]
+//                   [--substeps N] [--iterations N]   (FluidSettings::substeps, the solver's constraint iterations)
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -66,6 +67,7 @@ std::uint64_t stateHash(const tide::Fluid& fluid) {
 int main(int argc, char** argv) {
     double seconds = 8.0;
     int threads = 2;
+    int substeps = 0, iterations = 0;  // 0: FluidSettings' defaults
     std::string only, solver = "pbf", tracePath;
     for (int i = 1; i < argc; ++i) {
         const std::string flag = argv[i];
@@ -78,14 +80,18 @@ int main(int argc, char** argv) {
         else if (flag == "--only") only = argv[++i];
         else if (flag == "--solver") solver = argv[++i];
         else if (flag == "--trace") tracePath = argv[++i];
+        else if (flag == "--substeps") substeps = std::atoi(argv[++i]);
+        else if (flag == "--iterations") iterations = std::atoi(argv[++i]);
         else {
-            std::fprintf(stderr, "usage: %s [--seconds S] [--threads T] [--only NAME] [--solver NAME] [--trace FILE]\n", argv[0]);
+            std::fprintf(stderr, "usage: %s [--seconds S] [--threads T] [--only NAME] [--solver NAME] [--trace FILE] [--substeps N] [--iterations N]\n", argv[0]);
             return 2;
         }
     }
     tide::FluidSettings settings;
     settings.threads = threads;
     settings.solver = tide::FluidSettings::solverNamed(solver);
+    if (substeps > 0) settings.substeps = substeps;
+    if (iterations > 0) settings.solver.constraintIterations = iterations;
     const auto tank = [&](tide::Fluid& fluid) {
         fluid.init(65535, glm::vec3(-20), glm::vec3(20), glm::vec3(0), glm::vec3(0), glm::vec3(0, -9.81f, 0), settings);
     };

@@ -19,6 +19,8 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     if (!held) w.absorbWaves();
     w.moveBoundaries(w.time);
     if (held) w.holdBoundaries();
+    // Ocean zones hold their buffers over the solver's step from where they stand now.
+    if (!w.zones) w.solver->predict(w.particles, w.def.solver, w.def.gravity, maxDt, w.threads);
     w.rebuildNeighbors();
     clock.lap(Phase::NeighborSearch);
     StepContext ctx{w.particles, w.neighbors, w.materials, w.def.solver, w.def.gravity, w.h,

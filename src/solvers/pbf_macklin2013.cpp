@@ -162,6 +162,16 @@ void PbfMacklin2013::confineVorticity(StepContext& ctx, float dt, float epsilon)
     });
 }
 
+void PbfMacklin2013::predict(ParticleStore& p, const SolverDef& def, const glm::vec3& gravity, double maxDt, int threads) {
+    // Algorithm 1, lines 1–4, with step()'s Δt
+    const auto dt = static_cast<float>(std::min<double>(maxDt, def.maxDt));
+    parallelFor(p.size(), threads, [&](std::uint32_t i) {
+        p.velocity[i] += dt * gravity;
+        p.position[i] += dt * p.velocity[i];
+    });
+    predicted_ = true;
+}
+
 double PbfMacklin2013::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     const auto n = p.size();
@@ -181,15 +191,19 @@ double PbfMacklin2013::step(StepContext& ctx) {
         std::fill(pairs->end() - pair_sums::kPadding, pairs->end(), 0.0f);
     }
     const float referenceDensity = ctx.materials.empty() ? 1000.0f : ctx.materials[0].restDensity;
-    // Algorithm 1, lines 1–4: external forces and the predicted positions.
+    // Algorithm 1, lines 1–4: external forces and the predicted positions (unless predict() did).
+    const bool predicted = predicted_;
+    predicted_ = false;
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         const float rho0 = ctx.materials[p.material[i]].restDensity;
         volume_[i] = p.mass[i] / rho0;
         weight_[i] = referenceDensity / rho0;
         moved_[i] = glm::vec3(0.0f);
         p.acceleration[i] = ctx.gravity;
-        p.velocity[i] += dt * ctx.gravity;
-        p.position[i] += dt * p.velocity[i];
+        if (!predicted) {
+            p.velocity[i] += dt * ctx.gravity;
+            p.position[i] += dt * p.velocity[i];
+        }
         // (x_j, V_j) and w_j V_j² for the λ pass, packed: one load per neighbour for each
         rows_[i] = glm::vec4(p.position[i], volume_[i]);
         weightedVolume2_[i] = weight_[i] * volume_[i] * volume_[i];

@@ -26,9 +26,10 @@
 /// seed's tank diverged at 0.6 s, 30 m/s, with the spline's gradient).
 /// The iterations' pair loops run in SIMD lanes (solvers/pbf_pair_sums.hpp): two passes an
 /// iteration, the λ pass (which leaves each pair's gradient factor and s_corr) and the correction.
-/// The neighbour lists are the World's, found at the step's start positions: with steps
-/// where particles move a fraction of h, the pairs that come into range meanwhile start at
-/// the kernel's edge, where W is near 0.
+/// The neighbour lists are the World's, found (as in Algorithm 1) at the predicted positions
+/// x*: predict() moves the particles there before the World's search. Lists found at the
+/// step's start missed the pairs that come into range over the step: the seed's tank at one
+/// 1/60 s step a frame collapsed (mean compression 50 % at 1 s).
 
 #include <vector>
 
@@ -46,6 +47,8 @@ public:
     [[nodiscard]] DensityKernel densityKernel() const override { return DensityKernel::Smoothing; }
     [[nodiscard]] bool usesWallPressure() const override { return false; }
     [[nodiscard]] bool recordsWallLoads() const override { return false; }
+    void predict(ParticleStore& particles, const SolverDef& def, const glm::vec3& gravity, double maxDt,
+                 int threads) override;
     double step(StepContext& ctx) override;
     [[nodiscard]] std::vector<double> carriedState() const override { return {lastDt_}; }
     bool restoreCarriedState(std::span<const double> state) override {
@@ -80,6 +83,7 @@ private:
     std::vector<glm::vec3> vorticity_;   ///< ω_i
     XsphFilter xsph_;
     double lastDt_ = 0.0;                ///< s; the last step's, for the share of a shorter one
+    bool predicted_ = false;             ///< predict() moved the particles to x* for this step
     float latticeDenominator_ = 0.0f;    ///< Σ_j |∇_j C_i|² in the rest lattice (cached)
     float latticeKey_[2] = {0.0f, 0.0f}; ///< (h, spacing) it was computed for
 };

@@ -132,6 +132,11 @@ public:
     /// Whether step() writes StepContext::loads (otherwise the fluid's loads on solids are 0
     /// and the World neither clears nor sums the per-pair records).
     [[nodiscard]] virtual bool recordsWallLoads() const { return true; }
+    /// Called before the neighbour search of a step of at most maxDt: a solver whose lists must
+    /// be found where the particles are predicted to go (pbf, Macklin & Müller 2013, Algorithm
+    /// 1, lines 1–7) moves them there and then step() does not. The default does nothing.
+    virtual void predict(ParticleStore& /*particles*/, const SolverDef& /*def*/, const glm::vec3& /*gravity*/,
+                         double /*maxDt*/, int /*threads*/) {}
     /// Returns the length of the step taken, s.
     virtual double step(StepContext& ctx) = 0;
     /// Scalars the solver carries from one step to the next (not per particle: those live in
