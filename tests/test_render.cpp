@@ -93,12 +93,13 @@ float rayHitsBox(const glm::vec3& origin, const glm::vec3& dir, const glm::vec3&
 
 /// Share of the pixels whose ray satisfies `select` that satisfy `colour`; counts them in `n`.
 double share(const Image& image, const std::function<bool(const glm::vec3& dir)>& select,
-             const std::function<bool(const glm::vec3& rgb)>& colour, int& n) {
+             const std::function<bool(const glm::vec3& rgb)>& colour, int& n,
+             const tide::render::Camera& camera = kCamera) {
     n = 0;
     int good = 0;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
-            const glm::vec3 dir = tide::render::pixelRay(kCamera, image.width, image.height,
+            const glm::vec3 dir = tide::render::pixelRay(camera, image.width, image.height,
                                                          {static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f});
             if (!select(dir)) continue;
             ++n;
@@ -164,6 +165,52 @@ TEST(RenderCli, WaterSurfaceShowsWaterWhereTheFluidIsAndSkyElsewhere) {
     int n = 0;
     EXPECT_LT(share(image, [&](const glm::vec3& d) { return rayHitsBox(kCamera.eye, d, inset, waterMax - inset) > 0.0f; },
                     skyLike, n), 0.01);
+}
+
+// An ocean scene (issue 43): the far field's sea around the near field to the horizon, where
+// a tank scene shows the sand-coloured ground; the sky stays above the horizon.
+TEST(RenderCli, OceanShowsTheSeaToTheHorizonAroundTheNearField) {
+    const fs::path scene = writeScene("ocean", R"({"name": "ocean render test",
+  "domain": {"min": [0, 0, 0], "max": [0.6, 0.3, 0.6]}, "particle_spacing": 0.03, "end_time": 1.1,
+  "solver": {"method": "dfsph", "max_dt": 0.005},
+  "materials": [{"name": "water", "density": 1000, "color": [0.1, 0.35, 0.75]}],
+  "ocean": {"depth": 0.15, "waves": {"type": "regular", "height": 0.02, "period": 1.0},
+            "zone_width": 0.2, "open_sides": ["-x", "+x", "-z", "+z"]},
+  "output": {"fps": 10},
+  "camera": {"eye": [0.3, 0.6, 1.8], "target": [0.3, 0.15, 0.3], "fov": 50}})");
+    const fs::path out = scratch("ocean_out");
+    const Result r = run(kTide + " render " + scene.string() + " --out " + out.string() +
+                         " --width 256 --height 192 --threads 1 --quiet");
+    ASSERT_EQ(r.exit, 0) << r.output;
+    const Image image = readPng(out / "frame_00011.png");  // the far field ramped in over its 1 s period
+    ASSERT_EQ(image.width, 256);
+    const tide::render::Camera camera{{0.3f, 0.6f, 1.8f}, {0.3f, 0.15f, 0.3f}, 50.0f};
+    const glm::vec3 nearMin(-0.05f, -1.0f, -0.05f), nearMax(0.65f, 1.0f, 0.65f);
+    // Below the horizon (by a margin for the waves) and off the near field: the sea.
+    const auto seaRay = [&](const glm::vec3& d) {
+        return d.y < -0.05f && rayHitsBox(camera.eye, d, nearMin, nearMax) < 0.0f;
+    };
+    // The sea: blue over red by a margin, as deep water or the sky it reflects at grazing.
+    const auto seaLike = [](const glm::vec3& c) { return c.b > c.r + 40.0f && c.b >= c.g; };
+    int seaPixels = 0, skyPixels = 0;
+    const double sea = share(image, seaRay, seaLike, seaPixels, camera);
+    const double sky = share(image, [](const glm::vec3& d) { return d.y > 0.05f; }, skyLike, skyPixels, camera);
+    std::printf("sea-coloured: %.3f of %d far-field pixels; sky-coloured: %.3f of %d\n", sea, seaPixels, sky, skyPixels);
+    ASSERT_GT(seaPixels, image.width * image.height / 10) << "the test's camera should see the far field";
+    EXPECT_GT(sea, 0.98);
+    EXPECT_GT(sky, 0.97);
+    // The sea is not flat: its waves make the colour vary along the rows of far-field pixels.
+    double widest = 0.0;
+    for (int y = 0; y < image.height; ++y) {
+        double lo = 255.0, hi = 0.0;
+        for (int x = 0; x < image.width; ++x) {
+            if (!seaRay(tide::render::pixelRay(camera, image.width, image.height, glm::vec2(x + 0.5f, y + 0.5f)))) continue;
+            lo = std::min<double>(lo, image.at(x, y).b);
+            hi = std::max<double>(hi, image.at(x, y).b);
+        }
+        widest = std::max(widest, hi - lo);
+    }
+    EXPECT_GT(widest, 10.0) << "the widest range of blue along a row of far-field pixels";
 }
 
 TEST(RenderCli, ParticleModeShowsEachMaterialsColour) {

@@ -116,6 +116,8 @@ int renderCommand(const RenderOptions& o) {
         std::printf("2D scene: drawn as particles (the surface mode needs a fluid's depth)\n");
         settings.mode = render::RenderMode::Particles;
     }
+    // An ocean's near field is a window onto the sea, not a container: no box around it.
+    if (scene.ocean) settings.showContainer = false;
     settings.colorBy = o.colorBy == "speed"      ? render::ColorBy::Speed
                        : o.colorBy == "density"  ? render::ColorBy::Density
                        : o.colorBy == "pressure" ? render::ColorBy::Pressure

@@ -300,6 +300,10 @@ public:
     AddStatus fillOcean();
     /// Whether setOcean was called.
     [[nodiscard]] bool hasOcean() const;
+    /// The ocean setOcean was given, or none.
+    [[nodiscard]] std::optional<OceanDef> ocean() const;
+    /// The far field's ramp factor now: 0 at t = 0, 1 after one peak period (1 without an ocean).
+    [[nodiscard]] double oceanRamp() const;
     /// The far field's surface height y at (x, z) now (ramped in over the first peak period,
     /// as the zones see it), m. Throws std::logic_error without an ocean.
     [[nodiscard]] double oceanSurfaceHeight(double x, double z) const;

@@ -469,6 +469,13 @@ AddStatus World::fillOcean() {
 
 bool World::hasOcean() const { return impl_->zones != nullptr; }
 
+std::optional<OceanDef> World::ocean() const {
+    if (!impl_->zones) return std::nullopt;
+    return impl_->oceanDef;
+}
+
+double World::oceanRamp() const { return impl_->zones ? impl_->zones->ramp(impl_->time) : 1.0; }
+
 double World::oceanSurfaceHeight(double x, double z) const {
     const Impl& w = *impl_;
     if (!w.zones) throw std::logic_error("oceanSurfaceHeight: no ocean (setOcean first)");

@@ -112,10 +112,8 @@ void FluidSurfaceVanDerLaan2009::draw(const Frame& frame, const gl::Texture& bac
     composite_.set("uInverseView", glm::inverse(frame.view));
     composite_.set("uTexel", glm::vec2(1.0f / static_cast<float>(frame.width), 1.0f / static_cast<float>(frame.height)));
     composite_.set("uSunDirection", frame.sunDirection);
-    // Absorption scaled up for small tanks, so that a tank's worth of water reads as water
-    // and not as glass: through 0.2 of the container's diagonal, red falls to ~e^-1.5.
     const float tank = std::max(frame.extent, 0.05f);
-    composite_.set("uAbsorption", 10.0f / tank);
+    composite_.set("uAbsorption", surfaceAbsorption(frame.extent));
     composite_.set("uRefraction", 0.35f / tank);
     glDisable(GL_DEPTH_TEST);
     gl::drawFullscreenTriangle(frame.emptyVertexArray);

@@ -3,10 +3,17 @@
 // "Screen Space Fluid Rendering with Curvature Flow" (I3D '09): render the particles'
 // sphere depth, smooth it in screen space, take normals from it, render the thickness, and
 // shade each pixel as a water surface over the background. No mesh is ever built.
+#include <algorithm>
+
 #include "frame.hpp"
 #include "gl.hpp"
 
 namespace tide::render {
+
+/// The water's absorption per metre, of the colours it lacks, in a container of diagonal
+/// `extent` m: scaled up for small tanks, so that a tank's worth of water reads as water and
+/// not as glass (through 0.2 of the diagonal, red falls to ~e^-1.5).
+inline float surfaceAbsorption(float extent) { return 10.0f / std::max(extent, 0.05f); }
 
 class FluidSurfaceVanDerLaan2009 {
 public:

@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "far_field_sea.hpp"
 #include "fluid_surface_vanderlaan2009.hpp"
 #include "frame.hpp"
 #include "gl.hpp"
@@ -57,12 +58,13 @@ const char* colorByName(ColorBy colorBy) {
 
 struct Renderer::Impl {
     gl::Program background{"background", source({shaders::kFullscreenVertex}).c_str(),
-                           source({shaders::kSky, shaders::kBackgroundFragment}).c_str()};
+                           source({shaders::kSky, shaders::kDeepWater, shaders::kBackgroundFragment}).c_str()};
     gl::Program lines{"container", source({shaders::kLinesVertex}).c_str(), source({shaders::kLinesFragment}).c_str()};
     gl::Program particles{"particles", source({shaders::kColormap, shaders::kSphereVertex}).c_str(),
                           source({shaders::kSphereFragmentCommon, shaders::kParticleFragment}).c_str()};
     gl::Program solids{"obstacles", source({shaders::kSolidVertex}).c_str(), source({shaders::kSolidFragment}).c_str()};
     FluidSurfaceVanDerLaan2009 surface;
+    FarFieldSea farField;
 
     GLuint emptyVertexArray = 0;
     GLuint particleArray = 0;
@@ -164,7 +166,20 @@ struct Renderer::Impl {
         return {lo, hi};
     }
 
-    void drawBackground(const Frame& f, const Camera& camera, const Snapshot& s, bool container) {
+    /// How the near field's water (material 0, or its override) is shaded: the far field's too.
+    static WaterLook waterLook(const Frame& f, const Snapshot& s, const RenderSettings& r) {
+        WaterLook look;
+        if (r.color[0].r >= 0.0f) look.color = r.color[0];
+        else if (!s.materials.empty()) look.color = s.materials[0].color;
+        look.absorption = surfaceAbsorption(f.extent);
+        look.fogDistance = 12.0f * f.extent;
+        // The drawn surface is the spheres' envelope: the top layer's centres (half a spacing
+        // under the water's surface) plus the sprite radius.
+        look.surfaceLift = r.mode == RenderMode::Surface ? f.radius - 0.5f * f.spacing : 0.0f;
+        return look;
+    }
+
+    void drawBackground(const Frame& f, const Camera& camera, const Snapshot& s, const RenderSettings& r) {
         const glm::mat4 viewProjection = f.projection * f.view;
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_ALWAYS);
@@ -180,10 +195,19 @@ struct Renderer::Impl {
         background.set("uTile", std::max(0.2f * std::max(size.x, size.z), 1e-3f));
         background.set("uFogDistance", 12.0f * f.extent);
         background.set("uSunDirection", f.sunDirection);
+        background.set("uOcean", s.ocean ? 1 : 0);
+        background.set("uSeaY", s.domainMin.y + (s.ocean ? static_cast<float>(s.ocean->depth) : 0.0f) + waterLook(f, s, r).surfaceLift);
+        background.set("uNearMin", glm::vec2(s.domainMin.x, s.domainMin.z));
+        background.set("uNearMax", glm::vec2(s.domainMax.x, s.domainMax.z));
+        const WaterLook water = waterLook(f, s, r);
+        background.set("uWaterColor", water.color);
+        background.set("uAbsorption", water.absorption);
+        background.set("uSeaDepth", s.ocean ? static_cast<float>(s.ocean->depth) : 0.0f);
         gl::drawFullscreenTriangle(emptyVertexArray);
         glDepthFunc(GL_LESS);
+        farField.draw(f, camera, s, water);
         drawSolids(f);
-        if (container) {
+        if (r.showContainer) {
             lines.use();
             lines.set("uViewProjection", viewProjection);
             lines.set("uColor", glm::vec3(0.25f, 0.27f, 0.3f));
@@ -239,6 +263,7 @@ void Renderer::draw(const Snapshot& snapshot, const Camera& camera, const Render
                     int height, unsigned framebuffer) {
     Impl& d = *impl_;
     d.uploadParticles(snapshot);
+    d.farField.update(snapshot, camera);
     if (settings.colorBy != ColorBy::Material)
         d.range = settings.range.x < settings.range.y ? settings.range : d.autoRange(snapshot, settings.colorBy);
 
@@ -256,7 +281,11 @@ void Renderer::draw(const Snapshot& snapshot, const Camera& camera, const Render
     f.sunDirection = glm::normalize(glm::vec3(-0.4f, 0.8f, 0.45f));
     f.emptyVertexArray = d.emptyVertexArray;
     f.drawSpheres = [&](const gl::Program& p) { d.setSphereUniforms(p, f, snapshot, settings); };
-    f.drawOccluders = [&] { d.drawSolids(f); };
+    // The far field's waves can hide near-field water behind them too.
+    f.drawOccluders = [&] {
+        d.drawSolids(f);
+        d.farField.draw(f, camera, snapshot, Impl::waterLook(f, snapshot, settings));
+    };
 
     glEnable(GL_PROGRAM_POINT_SIZE);
     glDisable(GL_BLEND);
@@ -265,7 +294,7 @@ void Renderer::draw(const Snapshot& snapshot, const Camera& camera, const Render
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         glViewport(0, 0, width, height);
         glClear(GL_DEPTH_BUFFER_BIT);
-        d.drawBackground(f, camera, snapshot, settings.showContainer);
+        d.drawBackground(f, camera, snapshot, settings);
         d.particles.use();
         d.particles.set("uLightDirection", glm::normalize(glm::mat3(f.view) * f.sunDirection));
         f.drawSpheres(d.particles);
@@ -279,7 +308,7 @@ void Renderer::draw(const Snapshot& snapshot, const Camera& camera, const Render
         d.backgroundTarget.bind();
         glViewport(0, 0, width, height);
         glClear(GL_DEPTH_BUFFER_BIT);
-        d.drawBackground(f, camera, snapshot, settings.showContainer);
+        d.drawBackground(f, camera, snapshot, settings);
         d.surface.draw(f, d.backgroundColour, framebuffer, std::max(settings.smoothingIterations, 0), settings.foam);
     }
     glDisable(GL_DEPTH_TEST);

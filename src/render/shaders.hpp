@@ -20,6 +20,26 @@ vec3 skyColor(vec3 dir) {
 }
 )";
 
+/// The sea seen from above, shaded as the surface pass shades the near field's water
+/// (kCompositeFragment): Schlick's Fresnel between the sky's reflection and what comes up
+/// through the water, the floor's sand absorbed along `path` metres of water (Beer–Lambert,
+/// per channel, with the surface pass's uAbsorption) over the water's own colour darkened,
+/// and the sun's highlight. n: the surface normal, v: towards the eye (world, unit).
+inline constexpr const char* kDeepWater = R"(
+uniform vec3 uWaterColor;
+uniform float uAbsorption;   // per metre, of the colours the water does not have
+vec3 deepWater(vec3 n, vec3 v, float path) {
+    float fresnel = 0.02 + 0.98 * pow(1.0 - max(dot(n, v), 0.0), 5.0);
+    vec3 lacking = vec3(1.0) - uWaterColor;
+    vec3 transmitted = exp(-uAbsorption * (lacking * lacking + 0.04) * path);
+    vec3 floorColor = vec3(0.80, 0.72, 0.56) * (0.55 + 0.45 * max(uSunDirection.y, 0.0));
+    vec3 refracted = floorColor * transmitted + uWaterColor * 0.3 * (vec3(1.0) - transmitted);
+    vec3 color = mix(refracted, skyColor(reflect(-v, n)), fresnel);
+    vec3 h = normalize(uSunDirection + v);
+    return color + vec3(1.0, 0.96, 0.88) * pow(max(dot(n, h), 0.0), 350.0) * 1.5;
+}
+)";
+
 /// Full-screen triangle from gl_VertexID, no attributes.
 inline constexpr const char* kFullscreenVertex = R"(
 void main() {
@@ -38,6 +58,11 @@ uniform vec2 uTexel;
 uniform float uGroundY;
 uniform float uTile;
 uniform float uFogDistance;
+uniform int uOcean;       // 1: an ocean scene (uSeaY, uNearMin, uNearMax)
+uniform float uSeaY;      // still water, world y
+uniform float uSeaDepth;  // m
+uniform vec2 uNearMin;    // the near field's x–z rectangle
+uniform vec2 uNearMax;
 out vec4 fragColor;
 void main() {
     vec2 ndc = gl_FragCoord.xy * uTexel * 2.0 - 1.0;
@@ -51,6 +76,20 @@ void main() {
         return;
     }
     vec3 hit = uEye + t * dir;
+    // An ocean: beyond the near field the ground is the sea's still water (the far field's
+    // mesh covers it out to its edge), flat and fogged to the horizon like the mesh.
+    if (uOcean != 0 && dir.y < -1e-5) {
+        float ts = (uSeaY - uEye.y) / dir.y;
+        vec3 sea = uEye + ts * dir;
+        if (ts > 0.0 && (any(lessThan(sea.xz, uNearMin)) || any(greaterThan(sea.xz, uNearMax)))) {
+            float fog = 1.0 - exp(-ts / uFogDistance);
+            vec3 water = deepWater(vec3(0.0, 1.0, 0.0), -dir, uSeaDepth / max(-dir.y, 0.02));
+            fragColor = vec4(mix(water, skyColor(vec3(dir.x, 0.0, dir.z)), fog), 1.0);
+            vec4 clip = uViewProjection * vec4(sea, 1.0);
+            gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
+            return;
+        }
+    }
     ivec2 cell = ivec2(floor(hit.xz / uTile));
     float checker = ((cell.x + cell.y) & 1) == 0 ? 1.0 : 0.92;
     vec3 sand = vec3(0.80, 0.72, 0.56) * checker * (0.55 + 0.45 * max(uSunDirection.y, 0.0));
@@ -58,6 +97,43 @@ void main() {
     fragColor = vec4(mix(sand, skyColor(vec3(dir.x, 0.0, dir.z)), fog), 1.0);
     vec4 clip = uViewProjection * vec4(hit, 1.0);
     gl_FragDepth = clamp(clip.z / clip.w * 0.5 + 0.5, 0.0, 1.0);
+}
+)";
+
+/// The far field's surface (far_field_sea.hpp): a mesh in world coordinates, shaded as deep
+/// water, fogged towards the horizon, and cut away over the near field, where the particles'
+/// own surface is drawn.
+inline constexpr const char* kFarFieldVertex = R"(
+layout(location = 0) in vec3 aPosition;
+layout(location = 1) in vec3 aNormal;
+uniform mat4 uViewProjection;
+out vec3 vPosition;
+out vec3 vNormal;
+void main() {
+    vPosition = aPosition;
+    vNormal = aNormal;
+    gl_Position = uViewProjection * vec4(aPosition, 1.0);
+}
+)";
+inline constexpr const char* kFarFieldFragment = R"(
+uniform vec3 uEye;
+uniform vec2 uNearMin;
+uniform vec2 uNearMax;
+uniform float uFogDistance;
+uniform float uSeaDepth;     // still water over the floor, m
+in vec3 vPosition;
+in vec3 vNormal;
+out vec4 fragColor;
+void main() {
+    if (all(greaterThan(vPosition.xz, uNearMin)) && all(lessThan(vPosition.xz, uNearMax))) discard;
+    vec3 toEye = uEye - vPosition;
+    float distance = length(toEye);
+    vec3 v = toEye / distance;
+    vec3 n = normalize(vNormal);
+    if (dot(n, v) < 0.0) n = normalize(n - 2.0 * dot(n, v) * v);  // a back-facing slope at grazing view
+    float fog = 1.0 - exp(-distance / uFogDistance);
+    vec3 water = deepWater(n, v, uSeaDepth / max(v.y, 0.02));
+    fragColor = vec4(mix(water, skyColor(vec3(-v.x, 0.0, -v.z)), fog), 1.0);
 }
 )";
 

@@ -19,6 +19,9 @@ void takeSnapshot(const World& world, Snapshot& out) {
     out.domainMax = world.def().domainMax;
     out.particleSpacing = world.def().particleSpacing;
     out.time = world.time();
+    out.gravity = world.def().gravity;
+    out.ocean = world.ocean();
+    out.oceanRamp = world.oceanRamp();
     out.stats = world.stats();
     ++out.version;
 }

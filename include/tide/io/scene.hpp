@@ -59,7 +59,7 @@ struct Scene {
     std::vector<EmitterDef> emitters;
     std::vector<WaveMakerDef> waveMakers;     ///< key "wavemaker"
     std::vector<DampingZoneDef> dampingZones; ///< key "damping"
-    std::optional<OceanDef> ocean;            ///< key "ocean": the far-field sea (issue 43); parsed, not yet simulated
+    std::optional<OceanDef> ocean;            ///< key "ocean": the far-field sea (issue 43)
     std::vector<GaugeDef> gauges;
     std::vector<ProbeDef> probes;
     OutputDef output;

@@ -4,6 +4,7 @@
 /// steps, so that drawing never reads a World that another thread is stepping.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,11 @@ struct Snapshot {
     glm::vec3 domainMax{1.0f};
     float particleSpacing = 0.02f;         ///< m
     double time = 0.0;                     ///< simulated s
+    glm::vec3 gravity{0.0f, -9.81f, 0.0f};  ///< m/s²
+    /// An ocean scene's far field (World::ocean), drawn around the near field (the domain) to
+    /// the horizon; its still water is at domainMin.y + ocean->depth.
+    std::optional<OceanDef> ocean;
+    double oceanRamp = 1.0;                ///< World::oceanRamp at `time`
     WorldStats stats;
     /// Changes whenever the particle data changes, so a renderer uploads each state once.
     std::uint64_t version = 0;
