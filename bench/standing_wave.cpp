@@ -8,7 +8,8 @@
 // --periodic: the same mode in a tank periodic along x, one wave length (2L) long, without the
 // end walls the water slides along: the decay of the waves themselves, as in a flume.
 //
-//   tide_standing_wave [--solver dfsph] [--spacing 0.02] [--support-ratio 2] [--amplitude 0.01] [--periodic] ...
+//   tide_standing_wave [--solver dfsph] [--spacing 0.02] [--support-ratio 2] [--amplitude 0.01] [--periodic] [--dimensions 2] ...
+// --dimensions 2: the same tank as a true 2D world (the plane z = 0) instead of the periodic z slab.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -25,6 +25,7 @@ struct TankOptions {
     int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows
     int maxIterations = SolverDef{}.maxIterations;
     int threads = 1;
+    int dimensions = 3;  ///< WorldDef::dimensions: 2 is the plane z = 0 (width then unused)
     KernelShape kernel = SolverDef{}.kernel;
 
     void addTo(CLI::App& app) {
@@ -53,6 +54,9 @@ struct TankOptions {
         app.add_option("--max-dt", maxDt, "solver.max_dt, s")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--cfl", cfl, "solver.cfl")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--threads", threads, "worker threads")->capture_default_str();
+        app.add_option("--dimensions", dimensions, "2: a true 2D world (the plane z = 0); 3: a periodic z slab")
+            ->capture_default_str()
+            ->check(CLI::IsMember({2, 3}));
     }
     [[nodiscard]] int widthInSpacings() const {
         return width > 0 ? width : scenarios::periodicWidthInSpacings(supportRatio);
@@ -62,6 +66,7 @@ struct TankOptions {
         def.particleSpacing = spacing;
         def.supportRatio = supportRatio;
         def.threads = threads;
+        def.dimensions = dimensions;
         def.solver.method = solver;
         def.solver.kernel = kernel;
         def.solver.viscosity = viscosity;

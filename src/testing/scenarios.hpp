@@ -31,13 +31,16 @@ inline int periodicWidthInSpacings(float supportRatio) {
 
 /// Still water `depth` deep in a tank `length` long and twice the depth high, walls across x
 /// (or periodic, if `def` makes x periodic); across z one periodic cell `widthInSpacings`
-/// spacings wide (2D), or with `closed` walls and a square floor. Spacing, support, gravity,
-/// solver and threads come from `def`.
+/// spacings wide (2D), or with `closed` walls and a square floor. With `def.dimensions` 2 the
+/// tank is the plane z = 0 (widthInSpacings and closed then say nothing). Spacing, support,
+/// gravity, solver and threads come from `def`.
 inline World stillTank(WorldDef def, float length, float depth, int widthInSpacings, bool closed = false) {
+    const bool planar = def.dimensions == 2;
     def.domainMin = {0.0f, 0.0f, 0.0f};
-    def.domainMax = {length, 2.0f * depth, closed ? length : static_cast<float>(widthInSpacings) * def.particleSpacing};
+    def.domainMax = {length, 2.0f * depth,
+                     planar ? 0.0f : closed ? length : static_cast<float>(widthInSpacings) * def.particleSpacing};
     def.periodic.y = false;
-    def.periodic.z = !closed;
+    def.periodic.z = !closed && !planar;
     World world(def);
     world.addMaterial(MaterialDef{});
     world.addBlock({{0.0f, 0.0f, 0.0f}, {length, depth, def.domainMax.z}, {}, 0});
