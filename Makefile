@@ -20,10 +20,13 @@ build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
 # The default scene (a directional sea around a pile, open on all four sides; docs/ocean.md)
-# through `tide run`: frames, gauges.csv and stats.json in out/demo. DEMO_SCENE picks another.
+# through `tide run`: frames, gauges.csv and stats.json in out/demo; then drawn by `tide render`
+# (the sea to the horizon around the near field) as PNG frames in out/demo_render.
+# DEMO_SCENE picks another.
 DEMO_SCENE ?= scenes/ocean_pile.json
 demo: build
 	@$(BUILD_DIR)/bin/tide run $(DEMO_SCENE) --out out/demo --force --end-time $(DEMO_SECONDS)
+	@$(BUILD_DIR)/bin/tide render $(DEMO_SCENE) --out out/demo_render --force --end-time $(DEMO_SECONDS) --width 960 --height 540
 
 test: build
 	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
