@@ -72,18 +72,11 @@ public:
     }
     /// As above, but what a solve that pushes with the change of κ needs instead of κ_b:
     /// change[b] = (new κ_b − last κ_b)·scale for each b near fluid (the others are left as
-    /// they are), with no array of κ_b over the whole shell. A non-empty `applied` also gets
-    /// change[b] added (the sum of the changes a solve pushed with, for its loads).
+    /// they are), with no array of κ_b over the whole shell.
     void update(const CrossNeighborList& fluidNear, std::span<const float> fluidKappa, int threads, float scale,
-                std::span<float> change, std::span<float> applied = {}) {
-        if (applied.empty())
-            update(fluidNear, fluidKappa, threads,
-                   [&](std::uint32_t b, float updated, float last) { change[b] = (updated - last) * scale; });
-        else
-            update(fluidNear, fluidKappa, threads, [&](std::uint32_t b, float updated, float last) {
-                change[b] = (updated - last) * scale;
-                applied[b] += change[b];
-            });
+                std::span<float> change) {
+        update(fluidNear, fluidKappa, threads,
+               [&](std::uint32_t b, float updated, float last) { change[b] = (updated - last) * scale; });
     }
 
     /// κ_b by boundary particle, from the last update() without a change; set for those near

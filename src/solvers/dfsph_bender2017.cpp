@@ -214,38 +214,27 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
                 wall = uniform ? pushed : wall + pushed / contrast_.scale(i);
             }
             p.velocity[i] -= dv + psi * wall;
+            if (ctx.loads) recordWallImpulses(ctx, i, psi, boundaryK);
         });
     });
 }
 
-void DfsphBender2017::recordWallImpulses(StepContext& ctx) const {
-    // Pair b's share of every applyPressure's wall term, psi (k_i + k_b) g_ib with
-    // g_ib = V_b ∇W_ib (k_b = k_i mirrored; read through the density contrast's scale), as the
-    // impulse on i. psi and g_ib stay fixed over the step, so the sum over the iterations of
-    // both solves is psi (Σ k_i + Σ k_b) g_ib: the same terms in another order, one kernel
-    // gradient per pair and step instead of one per pair and iteration.
+void DfsphBender2017::recordWallImpulses(StepContext& ctx, std::uint32_t i, float psi, std::span<const float> boundaryK) const {
+    // Pair b's share of applyPressure's wall term, psi (k_i + k_b) g_ib with g_ib = V_b ∇W_ib
+    // (k_b = k_i mirrored; read through the density contrast's scale), as the impulse on i.
     const ParticleStore& p = ctx.particles;
-    const bool uniform = contrast_.uniform();
-    withPairVector(ctx.periodic, [&](auto delta) {
-        parallelFor(static_cast<std::uint32_t>(p.size()), ctx.threads, [&](std::uint32_t i) {
-            const auto walls = ctx.boundaryNeighbors.of(i);
-            if (walls.empty()) return;
-            const glm::vec3 xi = p.position[i];
-            const PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
-            glm::vec3* impulse = ctx.loads->pressureImpulse.data() + ctx.boundaryNeighbors.offset(i);
-            const float psi = ctx.materials[p.material[i]].restDensity / p.density[i];
-            const float toImpulse = -p.mass[i] * psi;
-            // Σ k_i: twice the divergence solve's (mirrored, summed in warmDivergence) and the
-            // density solve's.
-            const float ki = 2.0f * p.warmDivergence[i] + appliedK_[i];
-            const float scale = uniform ? 1.0f : 1.0f / contrast_.scale(i);
-            for (std::size_t k = 0; k < walls.size(); ++k) {
-                const std::uint32_t b = walls[k];
-                const glm::vec3 g = (ctx.boundary.volume * wallF_.factor(f[k])) * delta(xi, ctx.boundary.position[b]);
-                impulse[k] = (toImpulse * (ki + scale * appliedBoundaryK_[b])) * g;
-            }
-        });
-    });
+    const glm::vec3 xi = p.position[i];
+    const auto walls = ctx.boundaryNeighbors.of(i);
+    const PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
+    glm::vec3* impulse = ctx.loads->pressureImpulse.data() + ctx.boundaryNeighbors.offset(i);
+    const float toImpulse = -p.mass[i] * psi;
+    const float scale = contrast_.uniform() ? 1.0f : 1.0f / contrast_.scale(i);
+    for (std::size_t k = 0; k < walls.size(); ++k) {
+        const std::uint32_t b = walls[k];
+        const glm::vec3 g = (ctx.boundary.volume * wallF_.factor(f[k])) * ctx.delta(xi, ctx.boundary.position[b]);
+        const float kb = boundaryK.empty() ? k_[i] : scale * boundaryK[b];
+        impulse[k] += (toImpulse * (k_[i] + kb)) * g;
+    }
 }
 
 double DfsphBender2017::meanRelativeError(const StepContext& ctx, Solve solve) const {
@@ -259,7 +248,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
     const auto n = p.size();
     error_.resize(n);
     k_.resize(n);
-    // p.warmDivergence sums κᵛ·Δt over this solve from here on (the pressure output, the loads and the
+    // p.warmDivergence sums κᵛ·Δt over this solve from here on (the pressure output and the
     // next warm start): no array of its own.
     const float warmStart = ctx.solver.divergenceWarmStart;
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -326,16 +315,10 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
             wallMoved_[b] = ctx.boundary.position[b] + dt * ctx.boundary.velocity[b];
         });
     }
-    // With loads, Σ k_ and Σ k_b of the pushes (recordWallImpulses); a retaken solve starts them again.
-    const bool loads = ctx.loads != nullptr;
-    if (loads) {
-        appliedK_.resize(n);
-        appliedBoundaryK_.assign(nb, 0.0f);
-    }
     // Applies the change of κ (fluid, then walls from it) as a velocity change.
     auto push = [&] {
         wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa, scaledKappa_, ctx.threads), ctx.threads, dt,
-                     boundaryK_, loads ? std::span<float>(appliedBoundaryK_) : std::span<float>());
+                     boundaryK_);
         applyPressure(ctx, boundaryK_);
         ctx.refreshGhosts(std::span<glm::vec3>(p.velocity));  // a ghost misses part of the wall's κ
     };
@@ -347,7 +330,6 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         kappa[i] = kWarmStart * p.warmKappa[i];
         k_[i] = kappa[i] * dt;
-        if (loads) appliedK_[i] = k_[i];
     });
     push();
     const float heavyBall = ctx.solver.momentum >= 0.0f ? ctx.solver.momentum : kMomentum;
@@ -417,7 +399,6 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
                 std::max(kappa[i] + relaxation * error_[i] * alpha_[i] * invDt2 + momentum * k_[i], 0.0f);  // eq. 12
             k_[i] = (updated - kappa[i]) * dt;
             kappa[i] = updated;
-            if (loads) appliedK_[i] += k_[i];
         });
         ctx.refreshGhosts(k_);  // a ghost's error and α miss neighbours
         ctx.refreshGhosts(kappa);
@@ -533,7 +514,6 @@ double DfsphBender2017::step(StepContext& ctx) {
         p.velocity = savedVelocity_;
     }
     if (!uniform && !densityDiverged_) dtCap_ = std::min(1.25 * dtCap_, static_cast<double>(limits.maxDt));
-    if (ctx.loads) recordWallImpulses(ctx);  // at the positions the solves pushed from
     const auto dtf = static_cast<float>(dt);
     // The pressure reported is κ averaged over this step and the last, weighted by their
     // lengths: the momentum of the density solve leaves κ zigzagging from step to step (±15 %

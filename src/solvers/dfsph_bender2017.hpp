@@ -86,9 +86,8 @@ private:
     /// v_i −= Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij + Σ_b Ψ_b ((k_i + k_b)/ρ_i) ∇W_ib for the
     /// current k_; boundary particles take `boundaryK`, or mirror k_i when it is empty.
     void applyPressure(StepContext& ctx, std::span<const float> boundaryK);
-    /// Writes each boundary pair's part of the step's applyPressure calls (both solves, the
-    /// density solve's last try) to ctx.loads, once per pair.
-    void recordWallImpulses(StepContext& ctx) const;
+    /// Adds each boundary pair's part of fluid particle i's last applyPressure to ctx.loads.
+    void recordWallImpulses(StepContext& ctx, std::uint32_t i, float psi, std::span<const float> boundaryK) const;
     /// κ̄_i = Σ_j m_j W_ij κ_j / Σ_j m_j W_ij over i and its fluid neighbours
     /// (SolverDef::differenceForm), into error_.
     void smoothKappa(StepContext& ctx);
@@ -100,8 +99,6 @@ private:
     std::vector<float> k_;             ///< κ·Δt (divergence) or κ·Δt² (density) of one iteration
     std::vector<float> kappa_;         ///< κ of the density solve so far, m²/s²
     std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
-    std::vector<float> appliedK_;      ///< Σ k_ the density solve pushed with (loads only)
-    std::vector<float> appliedBoundaryK_;  ///< Σ boundaryK_ it pushed with, per boundary particle (loads only)
     WallPressure wall_;
     DensityContrast contrast_;         ///< several rest densities: Solenthaler & Pajarola 2008
     JacobiWeightScale weightScale_;    ///< the Jacobi weights' factor for supports beyond 2 spacings
