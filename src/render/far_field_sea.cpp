@@ -19,12 +19,13 @@ namespace {
 constexpr int kSectors = 192;
 constexpr float kRingGrowth = 1.045f;
 
+/// What a sea is made from: the renderer makes its sea again only when this changes.
 std::string seaKeyOf(const OceanDef& ocean, float g) {
     const OceanWavesDef& w = ocean.waves;
     char key[512];
-    std::snprintf(key, sizeof key, "%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %llu %d %d %.17g %.9g", static_cast<int>(w.type),
+    std::snprintf(key, sizeof key, "%d %.17g %.17g %.17g %.17g %.17g %.17g %.17g %llu %d %d %.17g %.9g", static_cast<int>(w.type),
                   w.height, w.period, w.hs, w.tp, w.direction, w.spreading.value_or(-1.0), w.gamma.value_or(-1.0),
-                  ocean.depth, static_cast<unsigned long long>(w.seed), w.components, w.directions, ocean.depth, g);
+                  static_cast<unsigned long long>(w.seed), w.components, w.directions, ocean.depth, g);
     return key;
 }
 
