@@ -29,16 +29,11 @@ std::string seaKeyOf(const OceanDef& ocean, float g) {
     return key;
 }
 
-std::string source(std::initializer_list<const char*> pieces) {
-    std::string s = shaders::kVersion;
-    for (const char* p : pieces) s += p;
-    return s;
-}
 }  // namespace
 
 FarFieldSea::FarFieldSea()
-    : program_("far field", source({shaders::kFarFieldVertex}).c_str(),
-               source({shaders::kSky, shaders::kDeepWater, shaders::kFarFieldFragment}).c_str()) {
+    : program_("far field", shaders::compose({shaders::kFarFieldVertex}).c_str(),
+               shaders::compose({shaders::kSky, shaders::kDeepWater, shaders::kFarFieldFragment}).c_str()) {
     glGenVertexArrays(1, &vertexArray_);
     glGenBuffers(1, &vertexBuffer_);
     glGenBuffers(1, &indexBuffer_);

@@ -26,11 +26,6 @@ constexpr glm::vec3 kColormapStops[5] = {
     {0.267f, 0.005f, 0.329f}, {0.229f, 0.322f, 0.546f}, {0.128f, 0.567f, 0.551f},
     {0.369f, 0.789f, 0.383f}, {0.993f, 0.906f, 0.144f}};
 
-std::string source(std::initializer_list<const char*> pieces) {
-    std::string s = shaders::kVersion;
-    for (const char* p : pieces) s += p;
-    return s;
-}
 
 template <typename T>
 void upload(GLuint buffer, const std::vector<T>& data) {
@@ -57,12 +52,12 @@ const char* colorByName(ColorBy colorBy) {
 }
 
 struct Renderer::Impl {
-    gl::Program background{"background", source({shaders::kFullscreenVertex}).c_str(),
-                           source({shaders::kSky, shaders::kDeepWater, shaders::kBackgroundFragment}).c_str()};
-    gl::Program lines{"container", source({shaders::kLinesVertex}).c_str(), source({shaders::kLinesFragment}).c_str()};
-    gl::Program particles{"particles", source({shaders::kColormap, shaders::kSphereVertex}).c_str(),
-                          source({shaders::kSphereFragmentCommon, shaders::kParticleFragment}).c_str()};
-    gl::Program solids{"obstacles", source({shaders::kSolidVertex}).c_str(), source({shaders::kSolidFragment}).c_str()};
+    gl::Program background{"background", shaders::compose({shaders::kFullscreenVertex}).c_str(),
+                           shaders::compose({shaders::kSky, shaders::kDeepWater, shaders::kBackgroundFragment}).c_str()};
+    gl::Program lines{"container", shaders::compose({shaders::kLinesVertex}).c_str(), shaders::compose({shaders::kLinesFragment}).c_str()};
+    gl::Program particles{"particles", shaders::compose({shaders::kColormap, shaders::kSphereVertex}).c_str(),
+                          shaders::compose({shaders::kSphereFragmentCommon, shaders::kParticleFragment}).c_str()};
+    gl::Program solids{"obstacles", shaders::compose({shaders::kSolidVertex}).c_str(), shaders::compose({shaders::kSolidFragment}).c_str()};
     FluidSurfaceVanDerLaan2009 surface;
     FarFieldSea farField;
 

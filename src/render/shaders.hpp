@@ -2,9 +2,19 @@
 // GLSL 3.30 sources of every pass, as raw strings. Programs are put together from pieces:
 // kVersion + shared functions (kSky, kColormap) + the stage's body.
 
+#include <initializer_list>
+#include <string>
+
 namespace tide::render::shaders {
 
 inline constexpr const char* kVersion = "#version 330 core\n";
+
+/// A stage's source: kVersion, then the pieces in order.
+inline std::string compose(std::initializer_list<const char*> pieces) {
+    std::string s = kVersion;
+    for (const char* p : pieces) s += p;
+    return s;
+}
 
 /// The environment both the background and the water's reflections show: a sky gradient with
 /// a sun, and below the horizon a neutral ground colour.
