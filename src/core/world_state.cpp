@@ -9,6 +9,15 @@ std::span<glm::vec3> World::velocities() { return impl_->particles.velocity; }
 void World::reserve(std::uint32_t particles) {
     impl_->particles.reserve(std::min(particles, impl_->def.capacity));
 }
+void World::prepare() {
+    Impl& w = *impl_;
+    if (w.distribution) return;
+    // The step's own search, without its reordering (which would change when particles move in memory).
+    w.grid.build(w.particles.position, w.h, w.threads, w.periodic);
+    w.neighbors.build(w.grid, w.particles.position, w.h, w.threads);
+    w.boundaryNeighbors.build(w.boundary.grid, w.boundary.position, w.particles.position, w.h, w.threads);
+    w.solver->reserve(w.particles.size(), w.neighbors.slotCount());
+}
 const WorldStats& World::stats() const { return impl_->stats; }
 const WorldDef& World::def() const { return impl_->def; }
 float World::supportRadius() const { return impl_->h; }

@@ -81,7 +81,10 @@ bool Fluid::addPoint(const glm::vec3& min, const glm::vec3& max, const glm::vec3
     if (!world_) return false;
     BlockDef block{toMetres(min), toMetres(max), velocity, material};
     const bool added = world_->addBlock(block) == AddStatus::Added;
-    if (added) invalidateCaches();
+    if (added) {
+        world_->prepare();  // at load time: the first frame then costs what the others do
+        invalidateCaches();
+    }
     return added;
 }
 

@@ -50,6 +50,7 @@ public:
     void predict(ParticleStore& particles, const SolverDef& def, const glm::vec3& gravity, double maxDt,
                  int threads) override;
     double step(StepContext& ctx) override;
+    void reserve(std::size_t particles, std::uint64_t slots) override;
     [[nodiscard]] std::vector<double> carriedState() const override { return {lastDt_}; }
     bool restoreCarriedState(std::span<const double> state) override {
         if (state.size() != 1) return false;

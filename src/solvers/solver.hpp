@@ -139,6 +139,10 @@ public:
                          double /*maxDt*/, int /*threads*/) {}
     /// Returns the length of the step taken, s.
     virtual double step(StepContext& ctx) = 0;
+    /// Sizes (and touches) the per-particle and per-pair scratch step() will use for about
+    /// `particles` particles with `slots` pair slots in their neighbour lists, so that the first
+    /// step costs what the later do (World::prepare). Changes no result; the default does nothing.
+    virtual void reserve(std::size_t /*particles*/, std::uint64_t /*slots*/) {}
     /// Scalars the solver carries from one step to the next (not per particle: those live in
     /// the ParticleStore), for checkpoints; restoring them continues the run bit for bit.
     [[nodiscard]] virtual std::vector<double> carriedState() const { return {}; }
