@@ -222,13 +222,14 @@ TEST(Cli, BadFlagsExitTwo) {
         EXPECT_NE(help.output.find(flag), std::string::npos) << flag;
 }
 
-// Started by mpirun on several ranks, every rank would run the whole scene into the same folder:
-// refused (exit 2 from each rank) before anything is written. The launcher's variable alone
-// stands in for mpirun here.
-TEST(Cli, SeveralMpiRanksAreRefusedUntilTheStepIsSplit) {
+// `tide render` started by mpirun on several ranks would draw the whole scene into the same
+// folder from every rank: refused (exit 2 from each rank) before anything is written. The
+// launcher's variable alone stands in for mpirun here. (`mpirun tide run` splits the run:
+// tests/mpi/run_split_identical.sh.)
+TEST(Cli, SeveralMpiRanksAreRefusedByRender) {
     const fs::path scene = writeScene("mpi_ranks", smallScene());
     const fs::path out = scratch("mpi_ranks_out");
-    const Result r = run("OMPI_COMM_WORLD_SIZE=3 " + kTide + " run " + scene.string() + " --quiet --out " + out.string());
+    const Result r = run("OMPI_COMM_WORLD_SIZE=3 " + kTide + " render " + scene.string() + " --quiet --out " + out.string());
     EXPECT_EQ(r.exit, 2) << r.output;
     EXPECT_NE(r.output.find("one of 3 MPI ranks"), std::string::npos) << r.output;
     EXPECT_FALSE(fs::exists(out));

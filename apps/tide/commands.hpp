@@ -8,6 +8,9 @@
 namespace tide::io {
 struct Scene;
 }
+namespace tide::comm {
+class Communicator;
+}
 
 namespace tide::cli {
 
@@ -27,6 +30,7 @@ struct RunOptions {
     bool quiet = false;
     int checkpointEvery = 0;              ///< frames between checkpoints; 0: none
     std::string resume;                   ///< output folder of a stopped run to continue; empty: a new run
+    bool gather = false;                  ///< split run: VTU frames gathered into one file, not a piece per rank
 };
 
 struct RenderOptions {
@@ -43,7 +47,8 @@ struct RenderOptions {
     bool quiet = false;
 };
 
-int runCommand(const RunOptions& options);
+/// With `comm`, the run split among its ranks (`mpirun -np N tide run`; every rank calls it).
+int runCommand(const RunOptions& options, comm::Communicator* comm = nullptr);
 int renderCommand(const RenderOptions& options);
 /// Prints each problem of a bad scene on stderr, prefixed with the file unless it already is.
 void reportSceneProblems(const std::string& file, const std::vector<std::string>& problems);

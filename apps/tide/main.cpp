@@ -35,11 +35,15 @@ int main(int argc, char** argv) {
                        "Continue the stopped run in this folder from its newest checkpoint (same scene; it keeps its\n"
                        "end time, formats, solver and checkpoint interval unless given again); its frames come out\n"
                        "bit-identical to an uninterrupted run's");
+    runApp->add_flag("--gather", run.gather,
+                     "Under mpirun: VTU frames gathered into one frame_NNNNN.vtu instead of a piece per rank and a .pvtu");
     runApp->footer("On a terminal a progress bar shows simulated time, frame, particles, particle-steps/s and\n"
                    "the time left; otherwise one line per frame. Frame k (time k/fps) is written as\n"
                    "OUT/frame_NNNNN.<format>, with OUT/frames.pvd for ParaView and OUT/stats.json at the end.\n"
                    "Every step is checked for NaN/Inf and runaway speeds; a diverged run stops naming the step,\n"
                    "time, particle and quantity, keeping the frames and checkpoints written before.\n"
+                   "Under `mpirun -np N` the scene is split among the N processes and every N writes the same\n"
+                   "frames (CSV, PLY and OBJ gathered into one file; VTU a piece per rank and frame_NNNNN.pvtu).\n"
                    "Exit codes: 0 success, 1 the run failed (e.g. diverged), 2 bad input (also a damaged checkpoint).");
 
     RenderOptions render;
@@ -75,12 +79,23 @@ int main(int argc, char** argv) {
         app.exit(e);
         return kExitBadInput;
     }
-    // Every rank of `mpirun -np N tide run` would run the whole scene and write the same files.
-    if ((*runApp || *renderApp) && tide::comm::launcherRankCount() > 1) {
-        std::cerr << "tide: started as one of " << tide::comm::launcherRankCount()
-                  << " MPI ranks; this version steps a scene in one process (splitting it among ranks is\n"
-                     "  not built yet: docs/architecture.md, Processes). Run it without mpirun.\n";
+    // Every rank of `mpirun -np N tide render` would draw the whole scene into the same files.
+    if (*renderApp && tide::comm::launcherRankCount() > 1) {
+        std::cerr << "tide: render started as one of " << tide::comm::launcherRankCount()
+                  << " MPI ranks; it draws in one process. Run it without mpirun (`mpirun tide run` splits a run).\n";
         return kExitBadInput;
+    }
+    // `mpirun -np N tide run`: the scene split among the N ranks (N = 1 included, so that every N
+    // writes the same frames); a plain `tide run` steps it in this process alone.
+    if (*runApp && tide::comm::startedByMpiLauncher()) {
+        if (!tide::comm::mpiBuilt()) {
+            if (tide::comm::launcherRankCount() == 1) return runCommand(run);
+            std::cerr << "tide: started as one of " << tide::comm::launcherRankCount()
+                      << " MPI ranks, but built without MPI (-DTIDE_WITH_MPI=OFF). Run it without mpirun.\n";
+            return kExitBadInput;
+        }
+        std::unique_ptr<tide::comm::Communicator> comm = tide::comm::makeMpiCommunicator(&argc, &argv);
+        return runCommand(run, comm.get());
     }
     if (*runApp) return runCommand(run);
     if (*renderApp) return renderCommand(render);

@@ -1,15 +1,20 @@
 // `tide run`: simulate a scene, writing frame k at simulated time k/fps, then gauges.csv and
 // probes.csv (when the scene has gauges or probes) and stats.json. With --checkpoint-every it
-// also writes checkpoints, from which --resume continues bit for bit.
+// also writes checkpoints, from which --resume continues bit for bit. Under mpirun the World is
+// split among the ranks (core/world_distributed.hpp) and rank 0 writes what one process would.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <fstream>
 #include <regex>
 #include <sstream>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -17,7 +22,9 @@
 #include <tide/io/exporters.hpp>
 #include <tide/io/scene.hpp>
 
+#include "comm/communicator.hpp"
 #include "commands.hpp"
+#include "core/world_distributed.hpp"
 #include "measurements.hpp"
 #include "output_folder.hpp"
 #include "progress.hpp"
@@ -35,11 +42,17 @@ std::string frameName(int frame, io::Format format) {
     return name;
 }
 
-void writeStats(const fs::path& file, const World& world, double wall, std::uint64_t particleSteps,
-                std::uint32_t lost) {
+/// A split run's processes, for stats.json.
+struct RanksReport {
+    int ranks = 1;
+    RankCounts counts;
+};
+
+void writeStats(const fs::path& file, const World& world, std::uint64_t particles, double wall,
+                std::uint64_t particleSteps, std::uint32_t lost, const std::optional<RanksReport>& ranks) {
     const WorldStats& s = world.stats();
     nlohmann::ordered_json j;
-    j["particles"] = world.particles().size();
+    j["particles"] = particles;
     j["steps"] = s.steps;
     j["sim_time"] = world.time();
     j["wall_time"] = wall;
@@ -65,6 +78,18 @@ void writeStats(const fs::path& file, const World& world, double wall, std::uint
         j["ocean_particles_added"] = s.oceanAdded;
         j["ocean_particles_removed"] = s.oceanRemoved;
         j["ocean_coupling_share"] = steps > 0.0 ? p.coupling / steps : 0.0;
+    }
+    if (ranks) {
+        // Issue 47's report: each process's share and the imbalance (largest over mean).
+        j["ranks"] = ranks->ranks;
+        j["rank_particles"] = ranks->counts.owned;
+        j["rank_ghosts"] = ranks->counts.ghosts;
+        double most = 0.0, total = 0.0;
+        for (const std::uint64_t n : ranks->counts.owned) {
+            most = std::max(most, static_cast<double>(n));
+            total += static_cast<double>(n);
+        }
+        j["load_imbalance"] = total > 0.0 ? most * ranks->ranks / total : 1.0;
     }
     io::writeFileAtomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
@@ -110,9 +135,73 @@ Resumption loadNewestCheckpoint(const fs::path& dir) {
     return r;
 }
 
+/// A split run's failure on this rank alone (a divergence it found, a piece it could not write):
+/// says why on the real stderr and ends every rank, which would otherwise wait for it.
+[[noreturn]] void abortRanks(comm::Communicator& comm, int realStderr, int code, const std::string& message) {
+    const std::string line = "tide: rank " + std::to_string(comm.rank()) + ": " + message + "\n";
+    (void)!::write(realStderr, line.data(), line.size());
+    comm.abort(code);
+    std::_Exit(code);  // not reached: abort ends the job (g++ does not see [[noreturn]] through the virtual call)
+}
+
+std::string pieceName(int frame, int rank) {
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%05d_r%d.vtu", frame, rank);
+    return name;
+}
+
+std::string pvtuName(int frame) {
+    char name[64];
+    std::snprintf(name, sizeof name, "frame_%05d.pvtu", frame);
+    return name;
+}
+
+/// A split run's frame: every rank's own particles gathered on rank 0, which writes the file
+/// one process would (rows ordered by id); VTU (unless `gather`) as a piece per rank, each
+/// written by its rank, and the .pvtu naming them. Collective.
+void writeSplitFrame(comm::Communicator& comm, const World& world, const fs::path& dir, int frame,
+                     const std::vector<io::Format>& formats, const io::SurfaceMeshDef& surface, bool gather, int realStderr) {
+    const bool pieces = !gather && std::find(formats.begin(), formats.end(), io::Format::Vtu) != formats.end();
+    const bool gathered = std::any_of(formats.begin(), formats.end(), [&](io::Format f) { return f != io::Format::Vtu || gather; });
+    if (pieces) {
+        try {
+            io::writeFrame(dir / pieceName(frame, comm.rank()), io::Format::Vtu, ownedParticles(world), surface);
+        } catch (const std::exception& e) {
+            abortRanks(comm, realStderr, kExitRunFailed, e.what());
+        }
+        if (comm.rank() == 0) {
+            std::vector<std::string> names;
+            for (int r = 0; r < comm.size(); ++r) names.push_back(pieceName(frame, r));
+            io::writePvtu(dir / pvtuName(frame), names);
+        }
+    }
+    if (!gathered) return;
+    const ParticleStore all = gatherOwnedParticles(world, comm);
+    if (comm.rank() != 0) return;
+    for (const io::Format format : formats)
+        if (format != io::Format::Vtu || gather) io::writeFrame(dir / frameName(frame, format), format, all, surface);
+}
+
 }  // namespace
 
-int runCommand(const RunOptions& o) {
+int runCommand(const RunOptions& o, comm::Communicator* comm) {
+    const bool split = comm != nullptr;
+    const bool lead = !split || comm->rank() == 0;  // prints and writes the run's files
+    int realStderr = STDERR_FILENO;
+    if (!lead) {  // the other ranks say only what is theirs alone (abortRanks)
+        realStderr = ::dup(STDERR_FILENO);
+        const int devNull = ::open("/dev/null", O_WRONLY);
+        if (devNull >= 0) {
+            ::dup2(devNull, STDOUT_FILENO);
+            ::dup2(devNull, STDERR_FILENO);
+            ::close(devNull);
+        }
+    }
+    if (split && (!o.resume.empty() || o.checkpointEvery > 0)) {
+        std::fprintf(stderr, "tide: %s under mpirun: checkpoints of a split run are not built yet; run without them\n",
+                     o.resume.empty() ? "--checkpoint-every" : "--resume");
+        return kExitBadInput;
+    }
     io::Scene scene;
     try {
         scene = io::loadScene(o.scene);
@@ -175,6 +264,12 @@ int runCommand(const RunOptions& o) {
     std::optional<World> world;
     RunProgress done;  // what earlier sessions of this run did (nothing for a new run)
     const std::uint32_t crc = sceneCrc(o.scene);
+    if (split && Measurements(scene).any()) {
+        std::fprintf(stderr, "%s: gauges and probes cannot be split among processes yet; run it without mpirun\n",
+                     o.scene.c_str());
+        return kExitBadInput;
+    }
+    int failure = kExitOk;  // every rank must agree before the first step, which they take together
     try {
         world.emplace(io::buildWorld(scene));
         if (resumed) {
@@ -191,22 +286,28 @@ int runCommand(const RunOptions& o) {
                 throw ResumeError{file + ": " + e.what()};
             }
             removeStaleTemporaries(dir);  // a killed run's half-written files
-        } else {
-            prepareOutputFolder(dir, o.force);
         }
+        if (split) distributeWorld(*world, *comm);  // the same refusals on every rank, before any file
+        if (!resumed && lead) prepareOutputFolder(dir, o.force);
     } catch (const io::SceneError& e) {
         reportSceneProblems(o.scene, e.problems);
-        return kExitBadInput;
+        failure = kExitBadInput;
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "%s: %s\n", o.scene.c_str(), e.what());
-        return kExitBadInput;
+        failure = kExitBadInput;
     } catch (const OutputFolderError& e) {
         std::fprintf(stderr, "%s\n", e.what());
-        return kExitBadInput;
+        failure = kExitBadInput;
     } catch (const ResumeError& e) {
         std::fprintf(stderr, "tide: %s\n", e.message.c_str());
-        return kExitBadInput;
+        failure = kExitBadInput;
     }
+    if (split) failure = static_cast<int>(comm->max(failure));
+    if (failure != kExitOk) return failure;
+    // Every particle, on every rank (a split run's own particles add up to it; none are emitted).
+    const std::uint64_t totalParticles =
+        split ? static_cast<std::uint64_t>(comm->sum(static_cast<std::int64_t>(ownedIndices(*world).size())))
+              : world->particles().size();
 
     const int frames = io::framesAfterTheFirst(scene);
     const int checkpointEvery = o.checkpointEvery > 0 ? o.checkpointEvery : done.checkpointEvery;
@@ -218,8 +319,11 @@ int runCommand(const RunOptions& o) {
         try {
             settleAndReport(*world, scene.settleTime, scene.settleSpeed, o.quiet);
         } catch (const DivergenceError& e) {
-            std::fprintf(stderr, "tide: the simulation diverged while settling (settle.time %g s) at %s; no frame was written\n",
-                         scene.settleTime, e.what());
+            char text[512];
+            std::snprintf(text, sizeof text, "the simulation diverged while settling (settle.time %g s) at %s; no frame was written",
+                          scene.settleTime, e.what());
+            if (split) abortRanks(*comm, realStderr, kExitRunFailed, text);
+            std::fprintf(stderr, "tide: %s\n", text);
             return kExitRunFailed;
         }
     }
@@ -228,7 +332,7 @@ int runCommand(const RunOptions& o) {
     const auto wallSoFar = [&] {
         return done.wallSeconds + std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
-    Progress progress(scene.endTime, frames, o.quiet);
+    Progress progress(scene.endTime, frames, o.quiet || !lead);
     io::PvdWriter pvd(dir / "frames.pvd");
     const bool vtu = std::find(scene.output.formats.begin(), scene.output.formats.end(), io::Format::Vtu) !=
                      scene.output.formats.end();
@@ -248,15 +352,20 @@ int runCommand(const RunOptions& o) {
             if (frame > 0) {
                 const double target = frame / scene.output.fps;
                 world->advance(target - world->time(), [&] {
-                    particleSteps += world->particles().size();
-                    sessionSteps += world->particles().size();
-                    progress.step(world->time(), frame, world->particles().size(), sessionSteps);
+                    const std::uint64_t n = split ? totalParticles : world->particles().size();
+                    particleSteps += n;
+                    sessionSteps += n;
+                    progress.step(world->time(), frame, static_cast<std::uint32_t>(n), sessionSteps);
                 });
             }
-            for (io::Format format : scene.output.formats)
-                io::writeFrame(dir / frameName(frame, format), format, world->particles(), surface);
-            if (vtu) {
-                pvd.add(frame / scene.output.fps, frameName(frame, io::Format::Vtu));
+            if (split) {
+                writeSplitFrame(*comm, *world, dir, frame, scene.output.formats, surface, o.gather, realStderr);
+            } else {
+                for (io::Format format : scene.output.formats)
+                    io::writeFrame(dir / frameName(frame, format), format, world->particles(), surface);
+            }
+            if (vtu && lead) {
+                pvd.add(frame / scene.output.fps, split && !o.gather ? pvtuName(frame) : frameName(frame, io::Format::Vtu));
                 pvd.write();
             }
             measurements.sample(*world, world->time());
@@ -285,12 +394,18 @@ int runCommand(const RunOptions& o) {
                 io::writeCheckpoint(checkpointFile(dir, frame), world->saveState(), encodeRunProgress(now));
                 pruneCheckpoints(dir);
             }
-            progress.frame(world->time(), frame, world->particles().size(), sessionSteps);
+            progress.frame(world->time(), frame, split ? static_cast<std::uint32_t>(totalParticles) : world->particles().size(),
+                           sessionSteps);
         }
         progress.finish();
         const double wall = wallSoFar();
-        measurements.write(dir);
-        writeStats(dir / "stats.json", *world, wall, particleSteps, lost);
+        std::optional<RanksReport> ranks;
+        if (split) ranks = RanksReport{comm->size(), gatherRankCounts(*world, *comm)};
+        if (lead) {
+            measurements.write(dir);
+            writeStats(dir / "stats.json", *world, split ? totalParticles : world->particles().size(), wall, particleSteps,
+                       lost, ranks);
+        }
         if (const WorldStats& s = world->stats(); s.unconvergedSolves > 0)
             std::fprintf(stderr,
                          "tide: warning: the pressure solve stopped short of its density tolerance in %llu of %llu steps "
@@ -299,9 +414,14 @@ int runCommand(const RunOptions& o) {
                          static_cast<unsigned long long>(s.unconvergedSolves), static_cast<unsigned long long>(s.steps),
                          world->def().solver.maxIterations);
         if (!o.quiet)
-            std::printf("%d frames of %u particles in %s (%.1f s wall, %.2f M particle-steps/s)\n", frames + 1,
-                        world->particles().size(), dir.string().c_str(), wall, particleSteps / std::max(wall, 1e-9) / 1e6);
+            std::printf("%d frames of %llu particles in %s (%.1f s wall, %.2f M particle-steps/s)\n", frames + 1,
+                        static_cast<unsigned long long>(split ? totalParticles : world->particles().size()),
+                        dir.string().c_str(), wall, particleSteps / std::max(wall, 1e-9) / 1e6);
     } catch (const DivergenceError& e) {
+        if (split)
+            abortRanks(*comm, realStderr, kExitRunFailed,
+                       std::string("the simulation diverged at ") + e.what() + "; frames up to " +
+                           std::to_string(lastFrame) + " are kept in " + dir.string());
         progress.finish();
         measurements.write(dir);  // the rows up to the last good frame
         const std::vector<fs::path> checkpoints = listCheckpoints(dir);
@@ -310,6 +430,7 @@ int runCommand(const RunOptions& o) {
                      dir.string().c_str());
         return kExitRunFailed;
     } catch (const std::runtime_error& e) {
+        if (split) abortRanks(*comm, realStderr, kExitRunFailed, e.what());
         progress.finish();
         std::fprintf(stderr, "tide: %s\n", e.what());
         return kExitRunFailed;

@@ -272,6 +272,7 @@ public:
     /// Where obstacle `index` is at time t (its motion's pose; the identity when fixed).
     [[nodiscard]] ObstaclePose obstaclePose(std::uint32_t index, double t) const;
     /// Particles outside the container or inside an obstacle (moving ones where they are now): should always be 0.
+    /// In a run split among processes, over every rank (collective).
     [[nodiscard]] std::uint32_t countEscapedParticles() const;
 
     /// Add a wave paddle (a moving boundary, see WaveMakerDef). Add it before obstacles and
@@ -401,6 +402,7 @@ private:
     // A run split among processes (src/core/world_distributed.hpp) reaches into the state.
     friend void distributeWorld(World& world, comm::Communicator& comm);
     friend ParticleStore gatherOwnedParticles(const World& world, comm::Communicator& comm);
+    friend std::vector<std::uint32_t> ownedIndices(const World& world);
     std::unique_ptr<Impl> impl_;
 };
 

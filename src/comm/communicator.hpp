@@ -76,4 +76,9 @@ std::unique_ptr<Communicator> makeMpiCommunicator(int* argc, char*** argv);
 /// it tells them in the environment: 1 for a process started on its own.
 int launcherRankCount();
 
+/// Whether an MPI launcher (mpirun/mpiexec of Open MPI, or MPICH's Hydra) started this process,
+/// with any number of ranks, 1 included (Slurm's variables alone do not say so: a batch
+/// script's plain command has them too).
+bool startedByMpiLauncher();
+
 }  // namespace tide::comm

@@ -44,6 +44,12 @@ int launcherRankCount() {
     return 1;
 }
 
+bool startedByMpiLauncher() {
+    for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE"})
+        if (std::getenv(variable) != nullptr) return true;
+    return false;
+}
+
 #ifndef TIDE_WITH_MPI
 bool mpiBuilt() { return false; }
 std::unique_ptr<Communicator> makeMpiCommunicator(int*, char***) {

@@ -329,7 +329,9 @@ ObstaclePose World::obstaclePose(std::uint32_t index, double t) const {
 std::uint32_t World::countEscapedParticles() const {
     const Impl& w = *impl_;
     std::uint32_t escaped = 0;
-    for (const glm::vec3& x : w.particles.position) {
+    for (std::uint32_t i = 0; i < w.particles.size(); ++i) {
+        if (w.distribution && isGhost(w, i)) continue;  // counted by its owner
+        const glm::vec3& x = w.particles.position[i];
         bool out = false;
         for (int axis = 0; axis < 3 && w.def.walls; ++axis)  // a periodic axis has no outside
             out = out || (!w.periodic.periodic(axis) &&
@@ -339,6 +341,7 @@ std::uint32_t World::countEscapedParticles() const {
         for (const Impl::Paddle& paddle : w.paddles) out = out || paddle.maker.distanceInFront(w.time, x) < 0.0f;
         escaped += out;
     }
+    if (w.distribution) return static_cast<std::uint32_t>(countOverRanks(w, escaped));
     return escaped;
 }
 

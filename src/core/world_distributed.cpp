@@ -1,10 +1,14 @@
 #include "core/world_distributed.hpp"
 
+#include <algorithm>
+#include <cstring>
 #include <numeric>
+#include <span>
 
 #include "comm/domain_split.hpp"
 #include "comm/particle_records.hpp"
 #include "core/world_impl.hpp"
+#include "loads/solid_loads.hpp"
 
 namespace tide {
 
@@ -55,7 +59,6 @@ void distributeWorld(World& world, comm::Communicator& comm) {
     if (!w.movers.empty()) refuse("a moving obstacle");
     if (w.zones) refuse("an ocean");
     if (w.periodic.any) refuse("a periodic axis");
-    if (w.def.loads) refuse("loads");
     if (w.pairTables.anyDiffusion()) refuse("dye diffusion");
 
     auto d = std::make_shared<WorldDistribution>();
@@ -105,21 +108,73 @@ std::uint64_t ownedOverRanks(const World::Impl& w) {
     return static_cast<std::uint64_t>(w.distribution->comm->sum(owned));
 }
 
+std::uint64_t countOverRanks(const World::Impl& w, std::uint64_t local) {
+    return static_cast<std::uint64_t>(w.distribution->comm->sum(static_cast<std::int64_t>(local)));
+}
+
 double maxOverRanks(const World::Impl& w, double local) { return w.distribution->comm->max(local); }
 
-ParticleStore gatherOwnedParticles(const World& world, comm::Communicator& comm) {
+const std::vector<std::uint8_t>* ghostFlags(const World::Impl& w) { return &w.distribution->ghost; }
+
+void reduceContactImpulses(World::Impl& w) {
+    w.contacts.reduce([&](std::span<comm::ExactSum> sums) { w.distribution->sumOverRanks(sums); });
+}
+
+std::vector<SolidLoad> solidLoadsOverRanks(const World::Impl& w, double dt) {
+    std::vector<comm::ExactSum> terms =
+        exactSolidLoadTerms(w.wallLoads, w.boundaryNeighbors, w.boundary, w.particles.size(), w.distribution->ghost, dt,
+                            w.solidReferences(w.time), w.periodic, w.threads);
+    w.distribution->sumOverRanks(terms);
+    return solidLoadsOf(terms);
+}
+
+std::vector<std::uint32_t> ownedIndices(const World& world) {
     const World::Impl& w = *world.impl_;
     std::vector<std::uint32_t> owned;
+    owned.reserve(w.particles.size());
     for (std::uint32_t i = 0; i < w.particles.size(); ++i)
         if (!w.distribution || !w.distribution->ghost[i]) owned.push_back(i);
-    const std::vector<comm::Bytes> blocks = comm.gatherToRoot(comm::packParticles(w.particles, owned));
-    ParticleStore all;
-    for (const comm::Bytes& b : blocks) comm::appendPacked(all, b);
+    return owned;
+}
+
+namespace {
+
+/// `all` ordered by id.
+void sortById(ParticleStore& all) {
     std::vector<std::uint32_t> order(all.size());
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return all.id[a] < all.id[b]; });
     all.permute(order);
+}
+
+}  // namespace
+
+ParticleStore gatherOwnedParticles(const World& world, comm::Communicator& comm) {
+    const std::vector<comm::Bytes> blocks = comm.gatherToRoot(comm::packParticles(world.particles(), ownedIndices(world)));
+    ParticleStore all;
+    for (const comm::Bytes& b : blocks) comm::appendPacked(all, b);
+    sortById(all);
     return all;
+}
+
+ParticleStore ownedParticles(const World& world) {
+    ParticleStore own;
+    comm::appendPacked(own, comm::packParticles(world.particles(), ownedIndices(world)));
+    sortById(own);
+    return own;
+}
+
+RankCounts gatherRankCounts(const World& world, comm::Communicator& comm) {
+    const std::uint64_t counts[2] = {ownedIndices(world).size(), world.particles().size()};
+    const std::vector<comm::Bytes> blocks = comm.gatherToRoot(std::as_bytes(std::span(counts)));
+    RankCounts report;
+    for (const comm::Bytes& b : blocks) {
+        std::uint64_t c[2] = {0, 0};
+        std::memcpy(c, b.data(), std::min(sizeof c, b.size()));
+        report.owned.push_back(c[0]);
+        report.ghosts.push_back(c[1] - c[0]);
+    }
+    return report;
 }
 
 }  // namespace tide

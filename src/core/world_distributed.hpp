@@ -7,8 +7,9 @@
 /// owners, takes new ghosts two cells deep, orders everything by (cell, id) and anchors the
 /// neighbour grid at the domain's corner, so that every particle meets its neighbours in the
 /// same order, and sums the same, on any number of ranks; the solver refreshes ghost fields
-/// through StepContext::sharing. What is split so far: wcsph, dfsph and pcisph with walls and fixed obstacles;
-/// anything else is refused when the World is distributed.
+/// through StepContext::sharing. What is split so far: wcsph, dfsph and pcisph with walls, fixed
+/// obstacles and their loads (exact sums over ranks); anything else is refused when the World is
+/// distributed.
 
 #include <tide/particles.hpp>
 #include <tide/world.hpp>
@@ -24,5 +25,18 @@ void distributeWorld(World& world, comm::Communicator& comm);
 /// The particles every rank owns, gathered on rank 0 and ordered by id (the other ranks get
 /// an empty store). Collective.
 ParticleStore gatherOwnedParticles(const World& world, comm::Communicator& comm);
+
+/// The indices of the particles this rank owns (all of them in a World not split).
+std::vector<std::uint32_t> ownedIndices(const World& world);
+
+/// This rank's own particles (not its ghosts), ordered by id: its piece of a frame.
+ParticleStore ownedParticles(const World& world);
+
+/// Particles each rank owns and the ghosts it holds now, on rank 0 (the others get empty
+/// lists). Collective.
+struct RankCounts {
+    std::vector<std::uint64_t> owned, ghosts;
+};
+RankCounts gatherRankCounts(const World& world, comm::Communicator& comm);
 
 }  // namespace tide

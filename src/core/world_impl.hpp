@@ -69,7 +69,14 @@ bool isGhost(const World::Impl& w, std::uint32_t i);
 /// Σ over ranks of a sum each rank took exactly (statistics of a split run).
 double sumOverRanks(const World::Impl& w, const comm::ExactSum& local);
 std::uint64_t ownedOverRanks(const World::Impl& w);
+std::uint64_t countOverRanks(const World::Impl& w, std::uint64_t local);
 double maxOverRanks(const World::Impl& w, double local);
+/// A split run's ghost flags (1: not this rank's), for bookings that must skip them.
+const std::vector<std::uint8_t>* ghostFlags(const World::Impl& w);
+/// A split run's contact impulses summed over the ranks (ContactImpulses::reduce).
+void reduceContactImpulses(World::Impl& w);
+/// A split run's loads of the step (sumSolidLoads over every rank's own particles, exactly).
+std::vector<SolidLoad> solidLoadsOverRanks(const World::Impl& w, double dt);
 
 struct World::Impl {
     WorldDef def;
@@ -242,7 +249,9 @@ struct World::Impl {
     /// The step's loads from the pairs the solver recorded (boundary particles where the step
     /// started), added to the running average; without `recorded` (the solver records none), 0.
     void sumLoads(double dt, bool recorded) {
-        if (recorded)
+        if (recorded && distribution)
+            lastLoads = solidLoadsOverRanks(*this, dt);
+        else if (recorded)
             sumSolidLoads(wallLoads, boundaryNeighbors, boundary, particles.size(), dt, solidReferences(time), periodic,
                           threads, lastLoads);
         else

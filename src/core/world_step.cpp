@@ -65,7 +65,8 @@ double World::Impl::step(double maxDt, Clock clockMode) {
     const float margin = w.solver->wallMargin() * w.def.particleSpacing;
     // The projections below stop strays: the normal speed they take away is momentum the
     // solid absorbs, part of its load (with loads on, each stage's change is booked to it).
-    if (loads) w.contacts.begin(w.particles, w.solidReferences(w.time), w.periodic);
+    if (loads)
+        w.contacts.begin(w.particles, w.solidReferences(w.time), w.periodic, w.distribution ? ghostFlags(w) : nullptr);
     // Moving obstacles first: where one squeezes a particle against a wall, the wall wins.
     for (const Impl::Mover& m : w.movers) {
         projectOutOfMovingObstacle(w.obstacles[m.index], w.moverPose(m, end), w.particles, margin, w.threads);
@@ -100,6 +101,7 @@ double World::Impl::step(double maxDt, Clock clockMode) {
             w.contacts.book(w.particles, w.threads, [&](std::uint32_t, const glm::vec3&) { return solid; });
         }
     }
+    if (loads && w.distribution) reduceContactImpulses(w);
     if (loads) w.contacts.finish(dt, w.lastLoads, w.loadImpulse);
     applyDampingZones(w.dampingZones, w.particles, dt, w.threads);
     if (w.zones) {

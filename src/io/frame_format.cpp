@@ -26,6 +26,10 @@ std::string_view extension(Format format) {
     return "";
 }
 
+void writePvtu(const std::filesystem::path& file, const std::vector<std::string>& pieces) {
+    writeFileAtomically(file, [&](std::ostream& out) { detail::writePvtu(out, pieces); });
+}
+
 void writeFrame(const std::filesystem::path& file, Format format, const ParticleStore& particles,
                 const SurfaceMeshDef& surface) {
     const std::size_t n = particles.position.size();

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstring>
 #include <ostream>
+#include <span>
 #include <string>
 #include <system_error>
 #include <type_traits>
@@ -24,6 +25,8 @@ void writeCsv(std::ostream& out, const ParticleStore& particles);
 void writePly(std::ostream& out, const ParticleStore& particles);
 /// Writes a frame as a VTK XML UnstructuredGrid with raw appended data, one VTK_VERTEX cell per point.
 void writeVtu(std::ostream& out, const ParticleStore& particles);
+/// Writes a parallel VTU file naming `pieces`, each written by writeVtu.
+void writePvtu(std::ostream& out, std::span<const std::string> pieces);
 
 /// Appends the shortest decimal form that reads back as exactly `value` (the text formats).
 template <class T>

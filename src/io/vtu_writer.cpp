@@ -3,6 +3,8 @@
 // draws the points.
 #include <cstdint>
 #include <ostream>
+#include <span>
+#include <string>
 #include <string_view>
 
 #include "io/frame_writers.hpp"
@@ -113,6 +115,27 @@ void writeVtu(std::ostream& out, const ParticleStore& particles) {
 
     // meshio drops everything after the last newline of the block: end it with one.
     out << "\n  </AppendedData>\n"
+           "</VTKFile>\n";
+}
+
+void writePvtu(std::ostream& out, std::span<const std::string> pieces) {
+    // The arrays writeVtu declares, in its order (ParaView checks each piece against these).
+    out << "<?xml version=\"1.0\"?>\n"
+           "<VTKFile type=\"PUnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+           "  <PUnstructuredGrid GhostLevel=\"0\">\n"
+           "    <PPointData Scalars=\"density\" Vectors=\"velocity\">\n"
+           "      <PDataArray type=\"Float32\" Name=\"velocity\" NumberOfComponents=\"3\"/>\n"
+           "      <PDataArray type=\"Float32\" Name=\"density\"/>\n"
+           "      <PDataArray type=\"Float32\" Name=\"pressure\"/>\n"
+           "      <PDataArray type=\"Float32\" Name=\"concentration\"/>\n"
+           "      <PDataArray type=\"Int32\" Name=\"material\"/>\n"
+           "      <PDataArray type=\"UInt32\" Name=\"id\"/>\n"
+           "    </PPointData>\n"
+           "    <PPoints>\n"
+           "      <PDataArray type=\"Float32\" Name=\"Points\" NumberOfComponents=\"3\"/>\n"
+           "    </PPoints>\n";
+    for (const std::string& piece : pieces) out << "    <Piece Source=\"" << piece << "\"/>\n";
+    out << "  </PUnstructuredGrid>\n"
            "</VTKFile>\n";
 }
 

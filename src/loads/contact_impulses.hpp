@@ -13,6 +13,7 @@
 #include <tide/particles.hpp>
 #include <tide/world.hpp>
 
+#include "comm/exact_sum.hpp"
 #include "core/parallel.hpp"
 #include "core/periodic_box.hpp"
 
@@ -21,11 +22,17 @@ namespace tide {
 class ContactImpulses {
 public:
     /// Starts a step's booking: remembers the velocities, and where each solid's moments are taken.
-    void begin(const ParticleStore& p, std::span<const glm::dvec3> references, const PeriodicBox& periodic) {
+    /// In a run split among processes `ghosts` flags the particles this rank does not own: they
+    /// are not booked, and the impulses are summed exactly (ExactSum), so that reduce() gives the
+    /// same bits on any number of ranks.
+    void begin(const ParticleStore& p, std::span<const glm::dvec3> references, const PeriodicBox& periodic,
+               const std::vector<std::uint8_t>* ghosts = nullptr) {
         before_.assign(p.velocity.begin(), p.velocity.end());
         references_.assign(references.begin(), references.end());
         periodic_ = periodic;
         totals_.assign(references.size(), SolidLoad{});
+        ghosts_ = ghosts;
+        exact_.assign(ghosts ? references.size() * kTerms : 0, comm::ExactSum{});
     }
 
     /// Books every velocity changed since the last call, m_i Δv_i given to the fluid, to solid
@@ -35,6 +42,10 @@ public:
         const std::size_t solids = totals_.size();
         const auto n = p.size();
         const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
+        if (ghosts_) {
+            bookExactly(p, threads, solidOf);
+            return;
+        }
         partial_.assign(static_cast<std::size_t>(chunks) * solids, SolidLoad{});
         parallelFor(chunks, threads, [&](std::uint32_t c) {
             SolidLoad* sums = partial_.data() + static_cast<std::size_t>(c) * solids;
@@ -56,6 +67,18 @@ public:
             }
     }
 
+    /// A split run's totals, summed over the ranks by `sumOverRanks` (StepSharing's), before finish().
+    template <class SumOverRanks>
+    void reduce(SumOverRanks&& sumOverRanks) {
+        if (!ghosts_) return;
+        sumOverRanks(std::span<comm::ExactSum>(exact_));
+        for (std::size_t s = 0; s < totals_.size(); ++s)
+            for (int a = 0; a < 3; ++a) {
+                totals_[s].pressureForce[a] = exact_[kTerms * s + static_cast<std::size_t>(a)].value();
+                totals_[s].moment[a] = exact_[kTerms * s + 3 + static_cast<std::size_t>(a)].value();
+            }
+    }
+
     /// Adds the booked impulses' reaction, as forces over the step of `dt` seconds, to the
     /// step's loads (as pressure: contact is normal) and their impulse to the running sums.
     void finish(double dt, std::vector<SolidLoad>& step, std::vector<SolidLoad>& impulses) const {
@@ -72,6 +95,37 @@ public:
 
 private:
     static constexpr std::uint32_t kChunk = 2048;
+    static constexpr std::size_t kTerms = 6;  ///< impulse x y z, moment x y z
+
+    /// book() in a split run: this rank's own particles, each term added exactly.
+    template <class SolidOf>
+    void bookExactly(const ParticleStore& p, int threads, SolidOf&& solidOf) {
+        const std::size_t terms = exact_.size();
+        const auto n = p.size();
+        const std::uint32_t chunks = (n + kChunk - 1) / kChunk;
+        std::vector<comm::ExactSum> partial(static_cast<std::size_t>(chunks) * terms);
+        parallelFor(chunks, threads, [&](std::uint32_t c) {
+            comm::ExactSum* sums = partial.data() + static_cast<std::size_t>(c) * terms;
+            for (std::uint32_t i = c * kChunk; i < std::min(n, (c + 1) * kChunk); ++i) {
+                const glm::vec3 dv = p.velocity[i] - before_[i];
+                if (dv == glm::vec3(0.0f) || (*ghosts_)[i]) continue;
+                before_[i] = p.velocity[i];
+                const std::uint16_t s = solidOf(i, dv);
+                if (s >= totals_.size()) continue;
+                const glm::dvec3 impulse = static_cast<double>(p.mass[i]) * glm::dvec3(dv);
+                const glm::dvec3 moment = glm::cross(glm::dvec3(periodic_.delta(p.position[i], glm::vec3(references_[s]))), impulse);
+                for (int a = 0; a < 3; ++a) {
+                    sums[kTerms * s + static_cast<std::size_t>(a)].add(impulse[a]);
+                    sums[kTerms * s + 3 + static_cast<std::size_t>(a)].add(moment[a]);
+                }
+            }
+        });
+        for (std::uint32_t c = 0; c < chunks; ++c)
+            for (std::size_t t = 0; t < terms; ++t) exact_[t].merge(partial[static_cast<std::size_t>(c) * terms + t]);
+    }
+
+    const std::vector<std::uint8_t>* ghosts_ = nullptr;
+    std::vector<comm::ExactSum> exact_;  ///< split runs: per solid, kTerms exact sums
     std::vector<glm::vec3> before_;
     std::vector<glm::dvec3> references_;
     PeriodicBox periodic_;

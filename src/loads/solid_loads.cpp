@@ -53,4 +53,58 @@ void sumSolidLoads(const WallLoads& loads, const CrossNeighborList& boundaryNeig
         }
 }
 
+std::vector<comm::ExactSum> exactSolidLoadTerms(const WallLoads& loads, const CrossNeighborList& boundaryNeighbors,
+                                                const BoundaryParticles& boundary, std::uint32_t fluidCount,
+                                                std::span<const std::uint8_t> skip, double dt,
+                                                std::span<const glm::dvec3> references, const PeriodicBox& periodic,
+                                                int threads) {
+    constexpr std::size_t kTerms = 9;
+    const std::size_t solids = references.size();
+    std::vector<comm::ExactSum> total(solids * kTerms);
+    if (fluidCount == 0 || solids == 0 || !(dt > 0.0)) return total;
+    const std::uint32_t chunks = (fluidCount + kChunk - 1) / kChunk;
+    std::vector<comm::ExactSum> partial(static_cast<std::size_t>(chunks) * solids * kTerms);
+    const double perSecond = 1.0 / dt;
+    parallelFor(chunks, threads, [&](std::uint32_t c) {
+        comm::ExactSum* sums = partial.data() + static_cast<std::size_t>(c) * solids * kTerms;
+        const std::uint32_t end = std::min(fluidCount, (c + 1) * kChunk);
+        for (std::uint32_t i = c * kChunk; i < end; ++i) {
+            if (!skip.empty() && skip[i]) continue;
+            const auto walls = boundaryNeighbors.of(i);
+            const std::uint64_t slot = boundaryNeighbors.offset(i);
+            for (std::size_t k = 0; k < walls.size(); ++k) {
+                const std::uint32_t b = walls[k];
+                const std::uint16_t s = boundary.solid[b];
+                if (s >= solids) continue;
+                // The same terms as sumSolidLoads, each added exactly.
+                const glm::dvec3 pressure = -(glm::dvec3(loads.pressureForce[slot + k]) +
+                                              perSecond * glm::dvec3(loads.pressureImpulse[slot + k]));
+                const glm::dvec3 viscous = -glm::dvec3(loads.viscousForce[slot + k]);
+                const glm::dvec3 arm = glm::dvec3(periodic.delta(boundary.position[b], glm::vec3(references[s])));
+                const glm::dvec3 moment = glm::cross(arm, pressure + viscous);
+                comm::ExactSum* solid = sums + static_cast<std::size_t>(s) * kTerms;
+                for (int a = 0; a < 3; ++a) {
+                    solid[a].add(pressure[a]);
+                    solid[3 + a].add(viscous[a]);
+                    solid[6 + a].add(moment[a]);
+                }
+            }
+        }
+    });
+    for (std::uint32_t c = 0; c < chunks; ++c)
+        for (std::size_t t = 0; t < solids * kTerms; ++t) total[t].merge(partial[static_cast<std::size_t>(c) * solids * kTerms + t]);
+    return total;
+}
+
+std::vector<SolidLoad> solidLoadsOf(std::span<const comm::ExactSum> terms) {
+    std::vector<SolidLoad> out(terms.size() / 9);
+    for (std::size_t s = 0; s < out.size(); ++s)
+        for (int a = 0; a < 3; ++a) {
+            out[s].pressureForce[a] = terms[9 * s + static_cast<std::size_t>(a)].value();
+            out[s].viscousForce[a] = terms[9 * s + 3 + static_cast<std::size_t>(a)].value();
+            out[s].moment[a] = terms[9 * s + 6 + static_cast<std::size_t>(a)].value();
+        }
+    return out;
+}
+
 }  // namespace tide

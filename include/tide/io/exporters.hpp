@@ -46,6 +46,11 @@ void writeFileAtomically(const std::filesystem::path& file, const std::function<
 void writeFrame(const std::filesystem::path& file, Format format, const ParticleStore& particles,
                 const SurfaceMeshDef& surface = {});
 
+/// Writes a parallel VTU frame (`.pvtu`, VTK XML PUnstructuredGrid) atomically: the arrays a
+/// writeFrame VTU piece holds, and `pieces` (file names relative to the .pvtu's folder), one
+/// per process of a split run. Throws std::runtime_error on failure.
+void writePvtu(const std::filesystem::path& file, const std::vector<std::string>& pieces);
+
 /// A ParaView time series (.pvd collection) of frame files.
 class PvdWriter {
 public:
