@@ -55,9 +55,9 @@ public:
                 before_[i] = p.velocity[i];
                 const std::uint16_t s = solidOf(i, dv);
                 if (s >= solids) continue;
-                const glm::dvec3 impulse = static_cast<double>(p.mass[i]) * glm::dvec3(dv);
+                const glm::dvec3 impulse = impulseOf(p, i, dv);
                 sums[s].pressureForce += impulse;
-                sums[s].moment += glm::cross(glm::dvec3(periodic_.delta(p.position[i], glm::vec3(references_[s]))), impulse);
+                sums[s].moment += momentOf(p, i, s, impulse);
             }
         });
         for (std::uint32_t c = 0; c < chunks; ++c)
@@ -97,6 +97,14 @@ private:
     static constexpr std::uint32_t kChunk = 2048;
     static constexpr std::size_t kTerms = 6;  ///< impulse x y z, moment x y z
 
+    /// m_i Δv_i, and its moment about solid s's reference.
+    static glm::dvec3 impulseOf(const ParticleStore& p, std::uint32_t i, const glm::vec3& dv) {
+        return static_cast<double>(p.mass[i]) * glm::dvec3(dv);
+    }
+    glm::dvec3 momentOf(const ParticleStore& p, std::uint32_t i, std::uint16_t s, const glm::dvec3& impulse) const {
+        return glm::cross(glm::dvec3(periodic_.delta(p.position[i], glm::vec3(references_[s]))), impulse);
+    }
+
     /// book() in a split run: this rank's own particles, each term added exactly.
     template <class SolidOf>
     void bookExactly(const ParticleStore& p, int threads, SolidOf&& solidOf) {
@@ -112,8 +120,7 @@ private:
                 before_[i] = p.velocity[i];
                 const std::uint16_t s = solidOf(i, dv);
                 if (s >= totals_.size()) continue;
-                const glm::dvec3 impulse = static_cast<double>(p.mass[i]) * glm::dvec3(dv);
-                const glm::dvec3 moment = glm::cross(glm::dvec3(periodic_.delta(p.position[i], glm::vec3(references_[s]))), impulse);
+                const glm::dvec3 impulse = impulseOf(p, i, dv), moment = momentOf(p, i, s, impulse);
                 for (int a = 0; a < 3; ++a) {
                     sums[kTerms * s + static_cast<std::size_t>(a)].add(impulse[a]);
                     sums[kTerms * s + 3 + static_cast<std::size_t>(a)].add(moment[a]);

@@ -11,6 +11,20 @@ namespace tide {
 namespace {
 /// Fluid particles a chunk sums: fixed, so the grouping of the sums never depends on threads.
 constexpr std::uint32_t kChunk = 2048;
+
+/// What the solid of boundary particle b takes from its pair with a fluid particle, slot `slot`:
+/// the reaction of what b applied to the fluid (impulses divided by the step), and its moment.
+struct PairLoad {
+    glm::dvec3 pressure, viscous, moment;
+};
+PairLoad pairLoadOf(const WallLoads& loads, std::uint64_t slot, double perSecond, const glm::vec3& at,
+                    const glm::dvec3& reference, const PeriodicBox& periodic) {
+    PairLoad l;
+    l.pressure = -(glm::dvec3(loads.pressureForce[slot]) + perSecond * glm::dvec3(loads.pressureImpulse[slot]));
+    l.viscous = -glm::dvec3(loads.viscousForce[slot]);
+    l.moment = glm::cross(glm::dvec3(periodic.delta(at, glm::vec3(reference))), l.pressure + l.viscous);
+    return l;
+}
 }  // namespace
 
 void sumSolidLoads(const WallLoads& loads, const CrossNeighborList& boundaryNeighbors, const BoundaryParticles& boundary,
@@ -30,17 +44,13 @@ void sumSolidLoads(const WallLoads& loads, const CrossNeighborList& boundaryNeig
             const std::uint64_t slot = boundaryNeighbors.offset(i);
             for (std::size_t k = 0; k < walls.size(); ++k) {
                 const std::uint32_t b = walls[k];
-                // The solid's load is the reaction: minus what b applied to fluid particle i.
-                const glm::dvec3 pressure = -(glm::dvec3(loads.pressureForce[slot + k]) +
-                                              perSecond * glm::dvec3(loads.pressureImpulse[slot + k]));
-                const glm::dvec3 viscous = -glm::dvec3(loads.viscousForce[slot + k]);
                 const std::uint16_t s = boundary.solid[b];
                 if (s >= solids) continue;
+                const PairLoad pair = pairLoadOf(loads, slot + k, perSecond, boundary.position[b], references[s], periodic);
                 SolidLoad& load = sums[s];
-                load.pressureForce += pressure;
-                load.viscousForce += viscous;
-                const glm::dvec3 arm = glm::dvec3(periodic.delta(boundary.position[b], glm::vec3(references[s])));
-                load.moment += glm::cross(arm, pressure + viscous);
+                load.pressureForce += pair.pressure;
+                load.viscousForce += pair.viscous;
+                load.moment += pair.moment;
             }
         }
     });
@@ -76,17 +86,13 @@ std::vector<comm::ExactSum> exactSolidLoadTerms(const WallLoads& loads, const Cr
                 const std::uint32_t b = walls[k];
                 const std::uint16_t s = boundary.solid[b];
                 if (s >= solids) continue;
-                // The same terms as sumSolidLoads, each added exactly.
-                const glm::dvec3 pressure = -(glm::dvec3(loads.pressureForce[slot + k]) +
-                                              perSecond * glm::dvec3(loads.pressureImpulse[slot + k]));
-                const glm::dvec3 viscous = -glm::dvec3(loads.viscousForce[slot + k]);
-                const glm::dvec3 arm = glm::dvec3(periodic.delta(boundary.position[b], glm::vec3(references[s])));
-                const glm::dvec3 moment = glm::cross(arm, pressure + viscous);
+                // sumSolidLoads' terms, each added exactly.
+                const PairLoad pair = pairLoadOf(loads, slot + k, perSecond, boundary.position[b], references[s], periodic);
                 comm::ExactSum* solid = sums + static_cast<std::size_t>(s) * kTerms;
                 for (int a = 0; a < 3; ++a) {
-                    solid[a].add(pressure[a]);
-                    solid[3 + a].add(viscous[a]);
-                    solid[6 + a].add(moment[a]);
+                    solid[a].add(pair.pressure[a]);
+                    solid[3 + a].add(pair.viscous[a]);
+                    solid[6 + a].add(pair.moment[a]);
                 }
             }
         }
