@@ -43,7 +43,9 @@ bool allInPlane(const World& world) {
 
 /// The time-averaged pressure against ρ g d in a tank 0.3 m deep, 0.4 m wide, at 1 cm, in
 /// depth bins one spacing thick across the middle half of the width, as the 3D tanks of
-/// test_incompressible_solvers.cpp (1.5 s from the lattice, then 0.5 s averaged).
+/// test_incompressible_solvers.cpp: 1.5 s from the lattice, then 4 s averaged. The 2D tank
+/// keeps sloshing (0.1 m/s at its surface), and 0.5 s averages of its deep half scattered by
+/// ±0.5 % (1.0059–1.0112 between solver settings); over 4 s, 1.0066.
 struct PlanarTank {
     std::vector<double> ratio;  ///< p̄/(ρ g d) per bin, from the top of the interior down
     double deepRatio = 0.0;     ///< over the lower half of the interior
@@ -65,7 +67,7 @@ PlanarTank planarTank(const std::string& solver, float s = 0.01f) {
     std::vector<double> sum(static_cast<std::size_t>(bins), 0.0), count(static_cast<std::size_t>(bins), 0.0);
     PlanarTank out;
     (void)world.takeMeanSolidLoads();
-    for (int sample = 0; sample < 20; ++sample) {
+    for (int sample = 0; sample < 160; ++sample) {
         world.advance(0.025, [&] { out.maxSpeed = std::max(out.maxSpeed, world.stats().maxSpeed); });
         const ParticleStore& p = world.particles();
         for (std::uint32_t i = 0; i < p.size(); ++i) {

@@ -17,8 +17,12 @@ namespace tide {
 
 namespace {
 /// Particles with fewer neighbours sit at the free surface: their density deficit is
-/// geometric, not compression, so the divergence solve leaves them alone (as SPlisHSPlasH does).
-constexpr std::uint32_t kMinNeighborsForDivergence = 20;
+/// geometric, not compression, so the divergence solve leaves them alone (as SPlisHSPlasH
+/// does: 20 in 3D, 7 in 2D). Counting the particle itself, a lattice site at the default
+/// support has 27 neighbours in 3D and 9 in 2D, one on the top layer 18 and 6: both limits
+/// leave out the top layer and keep the one below. With 3D's 20 in 2D no particle took part
+/// and the divergence solve never acted (docs/notes/waves.md § The 2D divergence solve).
+constexpr std::uint32_t minNeighborsForDivergence(int dimensions) { return dimensions == 2 ? 7 : 20; }
 /// Jacobi weight of the density solve. Its pressure may fall as well as rise, and full
 /// Jacobi steps on this system overshoot and diverge; IISPH (Ihmsen et al. 2014) uses 0.5.
 /// Both solves' weights are for the default support; wider ones scale them (jacobi_weight.hpp).
@@ -272,10 +276,11 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
     push(warmStart > 0.0f);
     const int minimum = ctx.solver.minDivergenceIterations >= 0 ? ctx.solver.minDivergenceIterations : ctx.solver.minIterations;
     const double tolerance = ctx.solver.maxDivergenceError >= 0.0f ? ctx.solver.maxDivergenceError : ctx.solver.maxDensityError;
+    const std::uint32_t minNeighbors = minNeighborsForDivergence(ctx.dimensions);
     int iteration = 0;
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
-            const bool interior = ctx.neighbors.of(i).size() + ctx.boundaryNeighbors.of(i).size() >= kMinNeighborsForDivergence;
+            const bool interior = ctx.neighbors.of(i).size() + ctx.boundaryNeighbors.of(i).size() >= minNeighbors;
             error_[i] = interior ? std::max(densityRate(ctx, i), 0.0f) : 0.0f;  // only compression
         });
         // Mean relative compression rate, over the last step's length.
