@@ -169,6 +169,9 @@ void writeSplitFrame(comm::Communicator& comm, const World& world, const fs::pat
         } catch (const std::exception& e) {
             abortRanks(comm, realStderr, kExitRunFailed, e.what());
         }
+        // The .pvtu appears only once every piece it names is written: a reader that
+        // waits for it (a watcher, a pipeline's next stage) never opens a missing piece.
+        comm.barrier();
         if (comm.rank() == 0) {
             std::vector<std::string> names;
             for (int r = 0; r < comm.size(); ++r) names.push_back(pieceName(frame, r));
