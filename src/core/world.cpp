@@ -384,7 +384,7 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     checkWaveFitsTank(def, d.domainMax.x - def.x, d.particleSpacing, g);
     WaveMaker maker(def, d.domainMin.y, g);
     // A wave tank's numerics unless the scene chose its own (docs/waves.md § Defaults).
-    applyWaveNumerics(w.def.solver);
+    applyWaveNumerics(w.def.solver, w.def.dimensions);
     if (w.paddles.empty()) {
         // The fluid's lattice starts at the first paddle's face in x; the walls move onto it
         // while nothing else is there (wave makers come before obstacles and blocks).
