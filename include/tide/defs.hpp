@@ -106,8 +106,9 @@ struct SolverDef {
     /// dfsph: heavy-ball momentum of the density solve (Polyak 1964), in [0, 0.95]: each
     /// Jacobi update adds this fraction of the last. Fewer iterations (8.9 instead of 15.5 a
     /// step at 0.7 on the benchmark dam break); waves keep more height without it in one flume
-    /// and less in another (docs/waves.md § Defaults): 0 switches it off. Negative: the solver's default, 0.7. Unused with
-    /// several rest densities (it overshoots their interfaces) and by the other solvers.
+    /// and less in another (docs/waves.md § Defaults): 0 switches it off. Negative: the
+    /// solver's default, 0.7. Unused with several rest densities (it overshoots their
+    /// interfaces) and by the other solvers.
     float momentum = -1.0f;
     /// dfsph: Fickian particle shifting (Lind et al. 2012), in [0, 1]: after each step every
     /// particle with a full neighbourhood and no wall within reach moves by
