@@ -149,8 +149,9 @@ int main(int argc, char** argv) {
         ->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--max-iterations", solver.maxIterations, "solver.max_iterations (the density solve's cap)")
         ->capture_default_str()->check(CLI::Range(1, 100000));
-    app.add_option("--support-ratio", supportRatio, "kernel support / spacing")->capture_default_str()->check(CLI::Range(1.0, 4.0));
+    app.add_option("--support-ratio", supportRatio, "kernel support / spacing (default: the kernel's own)")->check(CLI::Range(1.0, 4.0));
     CLI11_PARSE(app, argc, argv);
+    supportRatio = tide::scenarios::resolvedSupportRatio(solver, supportRatio);
     try {
         return runFlume(spacing, seconds, threads, reach, csv, solver, water, supportRatio);
     } catch (const std::exception& e) {  // a bad --viscosity, a diverging flume

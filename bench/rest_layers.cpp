@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
         tide::World world = tide::scenarios::stillTank(def, tank.length, tank.depth, tank.widthInSpacings(), closed);
         const int layers = static_cast<int>(std::lround(tank.depth / tank.spacing));
         std::printf("%s, spacing %.4f m, support %.2f spacings, %u particles, %d layers; speeds in mm/s, rho as (ρ/ρ0 − 1) in 0.01 %%, floor first\n",
-                    tank.solver.c_str(), tank.spacing, tank.supportRatio, world.particles().size(), layers);
+                    tank.solver.c_str(), tank.spacing, world.supportRadius() / tank.spacing, world.particles().size(), layers);
         if (settle > 0.0) {
             const tide::SettleReport r = world.settle(settle, quietSpeed);
             std::printf("settled %.2f s in %llu steps%s: max speed %.4f m/s before the velocities were zeroed\n", r.seconds,

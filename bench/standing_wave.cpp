@@ -77,7 +77,7 @@ int main(int argc, char** argv) {
         std::printf("%s, spacing %.4f m, support %.2f spacings, a = %.4f m, L = %.3f m, d = %.3f m: omega %.4f rad/s "
                     "against %.4f (%+.2f %%), amplitude %.4f m, decay %.3f 1/s, fit residual %.1e m; %llu steps, %.1f "
                     "pressure iterations a step%s\n",
-                    tank.solver.c_str(), tank.spacing, tank.supportRatio, amplitude, length, depth, fit.omega, mode.omegaTheory,
+                    tank.solver.c_str(), tank.spacing, world.supportRadius() / tank.spacing, amplitude, length, depth, fit.omega, mode.omegaTheory,
                     100.0 * mode.frequencyError(), fit.amplitude, fit.beta, fit.rmsResidual,
                     static_cast<unsigned long long>(s.steps), static_cast<double>(s.pressureIterationsSum) / s.steps,
                     periodic ? " (periodic in x)" : "");

@@ -34,9 +34,11 @@ struct TankOptions {
         app.add_option("--spacing", spacing, "particle spacing, m")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--kernel", kernel, "solver.kernel")
             ->transform(CLI::CheckedTransformer(std::map<std::string, KernelShape>{{"cubic_spline", KernelShape::CubicSpline},
-                                                                                   {"wendland_c2", KernelShape::WendlandC2}}))
-            ->default_str("cubic_spline");
-        app.add_option("--support-ratio", supportRatio, "kernel support / spacing")->capture_default_str()->check(CLI::Range(1.0, 4.0));
+                                                                                   {"wendland_c2", KernelShape::WendlandC2},
+                                                                                   {"automatic", KernelShape::Automatic}}))
+            ->default_str("automatic (Wendland C2 in 2D, cubic spline in 3D)");
+        app.add_option("--support-ratio", supportRatio, "kernel support / spacing (default: the kernel's own, 2 cubic spline, 3 Wendland C2)")
+            ->check(CLI::Range(1.0, 4.0));
         app.add_option("--length", length, "tank length (x), m")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--depth", depth, "water depth, m")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--width", width, "periodic z cell in spacings (0: the narrowest the support allows, at least 4)");
@@ -59,7 +61,7 @@ struct TankOptions {
             ->check(CLI::IsMember({2, 3}));
     }
     [[nodiscard]] int widthInSpacings() const {
-        return width > 0 ? width : scenarios::periodicWidthInSpacings(supportRatio);
+        return width > 0 ? width : scenarios::periodicWidthInSpacings(withResolvedKernel(worldDef()).supportRatio);
     }
     [[nodiscard]] WorldDef worldDef() const {
         WorldDef def;

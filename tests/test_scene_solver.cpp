@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <tide/io/scene.hpp>
+#include <tide/world.hpp>
 
 namespace {
 
@@ -27,6 +28,35 @@ TEST(SceneSolver, KernelChoosesItsSupportUnlessTheSceneSetsOne) {
     const io::Scene narrow = parseWithSolver(R"({"kernel": "wendland_c2", "support_ratio": 2.5})");
     EXPECT_EQ(narrow.world.supportRatio, 2.5f);
     EXPECT_EQ(parseWithSolver("{}").world.solver.kernel, KernelShape::CubicSpline);
+    EXPECT_EQ(parseWithSolver("{}").world.supportRatio, kCubicSplineSupportRatio);
+}
+
+io::Scene parse2D(const std::string& solver) {
+    const std::string text = R"({"dimensions": 2, "domain": {"min": [0, 0], "max": [0.4, 0.2]}, "gravity": [0, -9.81],
+  "particle_spacing": 0.02, "end_time": 0.1, "materials": [{"name": "water", "density": 1000}],
+  "blocks": [{"min": [0, 0], "max": [0.2, 0.1], "material": "water"}], "solver": )" + solver + "}";
+    return io::parseScene(text, "solver2d.json", ".");
+}
+
+// A 2D scene gets Wendland C2 at 3 spacings (25 neighbours, where the cubic spline at 2 has 9);
+// the classic solver keeps Müller's kernels at 2; a kernel or a support the scene sets stays.
+TEST(SceneSolver, A2DSceneGetsWendlandAtThreeSpacingsUnlessItChoosesAKernel) {
+    const io::Scene plain = parse2D("{}");
+    EXPECT_EQ(plain.world.solver.kernel, KernelShape::WendlandC2);
+    EXPECT_EQ(plain.world.supportRatio, kWendlandSupportRatio);
+    const io::Scene cubic = parse2D(R"({"kernel": "cubic_spline"})");
+    EXPECT_EQ(cubic.world.solver.kernel, KernelShape::CubicSpline);
+    EXPECT_EQ(cubic.world.supportRatio, kCubicSplineSupportRatio);
+    EXPECT_EQ(parse2D(R"({"support_ratio": 2.5})").world.supportRatio, 2.5f);
+    const io::Scene classic = parse2D(R"({"method": "classic"})");
+    EXPECT_EQ(classic.world.solver.kernel, KernelShape::CubicSpline);
+    EXPECT_EQ(classic.world.supportRatio, kCubicSplineSupportRatio);
+    World world(plain.world);  // the World resolves the same way from its own def
+    WorldDef def = plain.world;
+    def.solver.kernel = KernelShape::Automatic;
+    def.supportRatio = 0.0f;
+    EXPECT_FLOAT_EQ(World(def).supportRadius(), world.supportRadius());
+    EXPECT_EQ(World(def).def().solver.kernel, KernelShape::WendlandC2);
 }
 
 TEST(SceneSolver, DivergenceToleranceDefaultsToTheDensitys) {

@@ -71,7 +71,8 @@ FlumeRun runFlume(float spacing, float length, float dampingLength, const std::v
     if (const char* kernel = std::getenv("TIDE_WAVE_KERNEL"); kernel && std::string(kernel) == "wendland_c2")
         solver.kernel = KernelShape::WendlandC2;
     solver.soundSpeed = static_cast<float>(envOr("TIDE_WAVE_SOUND_SPEED", solver.soundSpeed));
-    const float supportRatio = static_cast<float>(envOr("TIDE_WAVE_SUPPORT_RATIO", WorldDef{}.supportRatio));
+    const float supportRatio =
+        scenarios::resolvedSupportRatio(solver, static_cast<float>(envOr("TIDE_WAVE_SUPPORT_RATIO", WorldDef{}.supportRatio)));
     const int width = scenarios::periodicWidthInSpacings(supportRatio);
     World world = scenarios::waveFlume(spacing, length, paddle.depth, paddle, dampingLength,
                                        static_cast<int>(envOr("TIDE_WAVE_THREADS", 0)), width, solver, supportRatio);

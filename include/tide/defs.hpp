@@ -77,16 +77,24 @@ enum class KernelShape {
     /// linear theory's frequency (within 0.5 %, the cubic spline at 2 spacings 2.5–3.3 % off:
     /// docs/waves.md). At 2 spacings it is too narrow (+15 %).
     WendlandC2,
+    /// The world's choice (the default, resolveAutomaticKernel): Wendland C2 in 2D, the cubic
+    /// spline in 3D. At 2 spacings a 2D particle has 9 neighbours (3D: 27), too few to carry
+    /// a wave: issue 42's 2D flume at 12.5 mm kept 0.0206 / 0.0170 m of a 0.03 m wave at 1.5 /
+    /// 2.0 m with the cubic spline, 0.0280 / 0.0246 m with Wendland C2 at 3 spacings (25
+    /// neighbours), at the same cost (fewer pressure iterations). docs/notes/waves.md.
+    Automatic,
 };
-/// The support a scene gives Wendland C2 unless it sets solver.support_ratio, in spacings.
+/// The support a world gives Wendland C2 unless it sets supportRatio, in spacings.
 inline constexpr float kWendlandSupportRatio = 3.0f;
+/// The support a world gives the cubic spline (and the classic solver's kernels) unless it sets supportRatio.
+inline constexpr float kCubicSplineSupportRatio = 2.0f;
 
 /// How the pressure/viscosity solver runs and how its time step is chosen.
 struct SolverDef {
     /// Solver name, see tide::solverNames(): dfsph, pcisph, wcsph, classic (the seed's Müller 2003),
     /// pbf (position based fluids, Macklin & Müller 2013: for interactive use, docs/live.md).
     std::string method = "dfsph";
-    KernelShape kernel = KernelShape::CubicSpline;  ///< scene key solver.kernel
+    KernelShape kernel = KernelShape::Automatic;  ///< scene key solver.kernel
     EquationOfState equationOfState = EquationOfState::Linear;
     /// Numerical speed of sound, m/s (classic, wcsph). 0 picks 10 × the free-fall speed
     /// over the domain height, which keeps density variations near 1 %.
@@ -188,7 +196,9 @@ struct WorldDef {
     float wallRestitution = 0.0f;           ///< fraction of normal speed kept when hitting a wall
     glm::vec3 gravity{0.0f, -9.81f, 0.0f};  ///< m/s²
     float particleSpacing = 0.02f;          ///< initial distance between particles, m
-    float supportRatio = 2.0f;              ///< kernel support radius h / particle spacing
+    /// Kernel support radius h / particle spacing; 0 (the default): the kernel's own
+    /// (kCubicSplineSupportRatio, kWendlandSupportRatio), resolveAutomaticKernel.
+    float supportRatio = 0.0f;
     std::uint32_t capacity = 1u << 22;      ///< most particles the world may hold
     int threads = 0;                        ///< worker threads; 0 = all cores
     int reorderInterval = 25;               ///< steps between re-sorting particles by grid cell
@@ -197,6 +207,21 @@ struct WorldDef {
     bool loads = true;
     SolverDef solver;
 };
+
+/// Fills what `d` leaves automatic: the kernel (Wendland C2 in 2D for the solvers that use
+/// the SPH sums' kernels, the cubic spline otherwise; classic keeps Müller's kernels) and the
+/// support ratio (the kernel's own). Set fields stay. World and the scene reader call it.
+inline void resolveAutomaticKernel(WorldDef& d) {
+    if (d.solver.kernel == KernelShape::Automatic)
+        d.solver.kernel = d.dimensions == 2 && d.solver.method != "classic" ? KernelShape::WendlandC2 : KernelShape::CubicSpline;
+    if (d.supportRatio == 0.0f)
+        d.supportRatio = d.solver.kernel == KernelShape::WendlandC2 ? kWendlandSupportRatio : kCubicSplineSupportRatio;
+}
+/// `d` with its automatic kernel and support ratio resolved.
+[[nodiscard]] inline WorldDef withResolvedKernel(WorldDef d) {
+    resolveAutomaticKernel(d);
+    return d;
+}
 
 /// One row of a motion table (MotionDef::Type::Table): the obstacle's pose at `time`.
 struct MotionKey {

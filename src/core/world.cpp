@@ -92,8 +92,9 @@ float latticeKernelSum(DensityKernel kernel, KernelShape shape, float spacing, f
 }
 
 World::World(const WorldDef& def) {
-    validateWorldDef(def);
-    impl_ = std::make_unique<Impl>(def);
+    const WorldDef resolved = withResolvedKernel(def);  // the kernel and support a 2D or 3D world gets by default
+    validateWorldDef(resolved);
+    impl_ = std::make_unique<Impl>(resolved);
 }
 World::~World() = default;
 World::World(World&&) noexcept = default;

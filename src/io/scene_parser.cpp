@@ -122,6 +122,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
         if (auto v = r.number(root["settle"], "speed", "settle", false, 0.0, 1e6)) scene.settleSpeed = static_cast<float>(*v) * scale;
     }
     if (root.contains("solver")) readSolver(r, root["solver"], scene);
+    resolveAutomaticKernel(w);  // the support the checks below and the estimates use
 
     if (domainOk) {
         const float support = w.particleSpacing * w.supportRatio;

@@ -79,10 +79,9 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
         s.constraintIterations = static_cast<int>(*v);
     }
     if (auto v = r.number(j, "vorticity", path, false, 0.0, 10.0)) s.vorticity = static_cast<float>(*v);
+    // Unset, the kernel's own (resolveAutomaticKernel): Wendland C2 wants a wider support than
+    // the cubic spline (at 2 spacings a standing wave runs 15 % fast, at 3 within 0.5 %).
     if (auto v = r.number(j, "support_ratio", path, false, 1.0, 4.0)) scene.world.supportRatio = static_cast<float>(*v);
-    // Wendland C2 wants a wider support than the cubic spline (at 2 spacings a standing wave
-    // runs 15 % fast, at 3 within 0.5 %): 3 spacings unless the scene says otherwise.
-    else if (s.kernel == KernelShape::WendlandC2) scene.world.supportRatio = kWendlandSupportRatio;
 }
 
 /// "materials": [...]; `ownTension` gets each material's `surface_tension` shortcut (the

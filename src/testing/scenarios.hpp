@@ -29,6 +29,16 @@ inline int periodicWidthInSpacings(float supportRatio) {
     return std::max(4, static_cast<int>(std::ceil(2.0f * supportRatio - 1e-4f)));
 }
 
+/// The support ratio a world with `solver` and `supportRatio` (0: automatic) gets in
+/// `dimensions` (resolveAutomaticKernel).
+inline float resolvedSupportRatio(const SolverDef& solver, float supportRatio, int dimensions = 3) {
+    WorldDef def;
+    def.dimensions = dimensions;
+    def.solver = solver;
+    def.supportRatio = supportRatio;
+    return withResolvedKernel(def).supportRatio;
+}
+
 /// Still water `depth` deep in a tank `length` long and twice the depth high, walls across x
 /// (or periodic, if `def` makes x periodic); across z one periodic cell `widthInSpacings`
 /// spacings wide (2D), or with `closed` walls and a square floor. With `def.dimensions` 2 the
