@@ -2,9 +2,12 @@
 
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <ostream>
 
 #include <tide/io/exporters.hpp>
+
+#include "core/world_distributed.hpp"
 
 namespace tide::cli {
 
@@ -24,7 +27,7 @@ void append(std::string& line, float value) { append(line, std::isfinite(value) 
 
 Measurements::Measurements(const io::Scene& scene) : gauges_(scene.gauges), probes_(scene.probes), loads_(scene.world.loads) {}
 
-void Measurements::sample(World& world, double t) {
+void Measurements::sample(World& world, double t, comm::Communicator* split) {
     if (loads_) {
         if (solids_.empty()) {
             // Obstacles first (the contract), then wave makers, then the walls that exist.
@@ -83,18 +86,27 @@ void Measurements::sample(World& world, double t) {
             }
         bodyRows_ += '\n';
     }
+    std::optional<FieldSamples> overRanks;
+    if (split && any()) {
+        std::vector<glm::vec2> lines;
+        std::vector<glm::vec3> points;
+        for (const io::GaugeDef& g : gauges_) lines.emplace_back(g.x, g.z);
+        for (const io::ProbeDef& p : probes_) points.push_back(p.position);
+        overRanks = sampleOverRanks(world, *split, lines, points);
+        if (split->rank() != 0) return;
+    }
     if (!gauges_.empty()) {
         append(gaugeRows_, t);
-        for (const io::GaugeDef& g : gauges_) {
+        for (std::size_t k = 0; k < gauges_.size(); ++k) {
             gaugeRows_ += ',';
-            append(gaugeRows_, world.surfaceHeight(g.x, g.z));
+            append(gaugeRows_, overRanks ? overRanks->heights[k] : world.surfaceHeight(gauges_[k].x, gauges_[k].z));
         }
         gaugeRows_ += '\n';
     }
     if (!probes_.empty()) {
         append(probeRows_, t);
-        for (const io::ProbeDef& p : probes_) {
-            const ProbeSample s = world.probe(p.position);
+        for (std::size_t k = 0; k < probes_.size(); ++k) {
+            const ProbeSample s = overRanks ? overRanks->probes[k] : world.probe(probes_[k].position);
             for (const float value : {s.pressure, s.velocity.x, s.velocity.y, s.velocity.z}) {
                 probeRows_ += ',';
                 append(probeRows_, value);

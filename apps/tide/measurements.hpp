@@ -23,6 +23,8 @@
 #include <tide/io/scene.hpp>
 #include <tide/world.hpp>
 
+#include "comm/communicator.hpp"
+
 namespace tide::cli {
 
 class Measurements {
@@ -31,8 +33,10 @@ public:
     /// Whether the scene has gauges or probes.
     [[nodiscard]] bool any() const { return !gauges_.empty() || !probes_.empty(); }
     /// One row of every file at simulated time t (forces.csv: the mean load since the last row,
-    /// World::takeMeanSolidLoads).
-    void sample(World& world, double t);
+    /// World::takeMeanSolidLoads). A World split among processes passes their communicator:
+    /// every rank calls it, the gauges and probes are read over all of them, and rank 0's rows
+    /// are the run's.
+    void sample(World& world, double t, comm::Communicator* split = nullptr);
     /// gauges.csv and probes.csv (only those the scene asks for) in `dir`.
     void write(const std::filesystem::path& dir) const;
     /// The rows sampled so far, for a checkpoint, and taking them back on resume.

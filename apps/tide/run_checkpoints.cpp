@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <numeric>
 #include <regex>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
+
+#include "comm/particle_records.hpp"
 
 namespace tide::cli {
 
@@ -26,6 +29,7 @@ std::string encodeRunProgress(const RunProgress& p) {
     j["checkpoint_every"] = p.checkpointEvery;
     j["end_time"] = p.endTime;
     j["formats"] = p.formats;
+    j["pieces"] = p.pieces;
     return j.dump();
 }
 
@@ -46,8 +50,9 @@ RunProgress decodeRunProgress(const std::string& text) {
         p.checkpointEvery = j.at("checkpoint_every").get<int>();
         p.endTime = j.at("end_time").get<double>();
         p.formats = j.at("formats").get<std::vector<std::string>>();
-        if (p.frame < 0 || p.checkpointEvery < 0)
-            throw std::runtime_error("the run's progress block is unreadable (negative frame or interval)");
+        p.pieces = j.value("pieces", 1);  // absent before split runs wrote checkpoints: one file
+        if (p.frame < 0 || p.checkpointEvery < 0 || p.pieces < 1)
+            throw std::runtime_error("the run's progress block is unreadable (negative frame or interval, or no pieces)");
         return p;
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error(std::string("the run's progress block is unreadable (") + e.what() + ")");
@@ -57,6 +62,12 @@ RunProgress decodeRunProgress(const std::string& text) {
 fs::path checkpointFile(const fs::path& dir, int frame) {
     char name[48];
     std::snprintf(name, sizeof name, "checkpoint_%05d.tidecp", frame);
+    return dir / name;
+}
+
+fs::path checkpointPiece(const fs::path& dir, int frame, int rank) {
+    char name[64];
+    std::snprintf(name, sizeof name, "checkpoint_%05d_r%d.tidecp", frame, rank);
     return dir / name;
 }
 
@@ -79,6 +90,38 @@ void pruneCheckpoints(const fs::path& dir) {
     const std::vector<fs::path> files = listCheckpoints(dir);
     std::error_code ignored;
     for (std::size_t k = 2; k < files.size(); ++k) fs::remove(files[k], ignored);
+    // Pieces whose main file is gone or was never written.
+    std::vector<std::string> kept;
+    for (std::size_t k = 0; k < std::min<std::size_t>(2, files.size()); ++k) kept.push_back(files[k].stem().string());
+    static const std::regex piece(R"((checkpoint_\d{5,})_r\d+\.tidecp)");
+    std::vector<fs::path> stale;
+    for (const auto& entry : fs::directory_iterator(dir, ignored)) {
+        std::smatch m;
+        const std::string name = entry.path().filename().string();
+        if (std::regex_match(name, m, piece) && std::find(kept.begin(), kept.end(), m[1].str()) == kept.end())
+            stale.push_back(entry.path());
+    }
+    for (const fs::path& f : stale) fs::remove(f, ignored);
+}
+
+WorldState joinCheckpointPieces(WorldState main, const std::vector<WorldState>& pieces) {
+    ParticleStore& all = main.particles;
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const WorldState& piece = pieces[k];
+        if (piece.time != main.time || piece.stats.steps != main.stats.steps)
+            throw std::runtime_error("piece " + std::to_string(k + 1) + " was saved at step " +
+                                     std::to_string(piece.stats.steps) + ", the main file at step " +
+                                     std::to_string(main.stats.steps));
+        std::vector<std::uint32_t> every(piece.particles.size());
+        std::iota(every.begin(), every.end(), 0u);
+        comm::appendPacked(all, comm::packParticles(piece.particles, every));
+        all.setNextId(std::max(all.nextId(), piece.particles.nextId()));
+    }
+    std::vector<std::uint32_t> order(all.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return all.id[a] < all.id[b]; });
+    all.permute(order);
+    return main;
 }
 
 }  // namespace tide::cli

@@ -5,11 +5,18 @@
 // Files are OUT/checkpoint_NNNNN.tidecp, NNNNN the frame written just before. The newest two
 // are kept: the newest to resume from, the one before in case the newest is found damaged
 // (resuming refuses a damaged file rather than silently going back further).
+//
+// A run split among N processes (mpirun) writes one file per rank: rank K > 0 its particles
+// as OUT/checkpoint_NNNNN_rK.tidecp, then rank 0 OUT/checkpoint_NNNNN.tidecp with its own and
+// the run's progress, which names the N pieces. The main file appears last, so a listed
+// checkpoint has all its pieces; resuming on any number of ranks (or without mpirun) joins them.
 
 #include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
+
+#include <tide/world.hpp>
 
 namespace tide::cli {
 
@@ -28,6 +35,7 @@ struct RunProgress {
     int checkpointEvery = 0;           ///< --checkpoint-every
     double endTime = 0.0;              ///< s, the scene's or --end-time
     std::vector<std::string> formats;  ///< frame formats, the scene's or --format
+    int pieces = 1;                    ///< files the World's state is in: the ranks that wrote it
 };
 
 /// The application block of a checkpoint (JSON text) and back; decode throws
@@ -36,9 +44,17 @@ std::string encodeRunProgress(const RunProgress& progress);
 RunProgress decodeRunProgress(const std::string& text);
 
 std::filesystem::path checkpointFile(const std::filesystem::path& dir, int frame);
+/// Rank `rank`'s piece of a split run's checkpoint (rank > 0; rank 0's is checkpointFile).
+std::filesystem::path checkpointPiece(const std::filesystem::path& dir, int frame, int rank);
 /// Checkpoint files in `dir`, newest (highest frame) first.
 std::vector<std::filesystem::path> listCheckpoints(const std::filesystem::path& dir);
-/// Removes all checkpoints but the newest two.
+/// Removes all checkpoints but the newest two, with their pieces, and pieces left by a run
+/// stopped before their main file was written.
 void pruneCheckpoints(const std::filesystem::path& dir);
+
+/// A split run's state joined from its pieces: `main` (rank 0's) with every piece's particles
+/// appended, ordered by id. Throws std::runtime_error naming the piece that does not belong
+/// (another time or step).
+WorldState joinCheckpointPieces(WorldState main, const std::vector<WorldState>& pieces);
 
 }  // namespace tide::cli

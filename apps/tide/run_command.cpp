@@ -129,6 +129,21 @@ Resumption loadNewestCheckpoint(const fs::path& dir) {
     try {
         r.checkpoint = io::readCheckpoint(files[0]);
         r.progress = decodeRunProgress(r.checkpoint.application);
+        if (r.progress.pieces > 1) {  // a split run's: the other ranks' particles
+            std::vector<WorldState> pieces;
+            for (int rank = 1; rank < r.progress.pieces; ++rank) {
+                const fs::path piece = checkpointPiece(dir, r.progress.frame, rank);
+                if (!fs::exists(piece))
+                    throw std::runtime_error(piece.string() + ": missing (" + files[0].filename().string() + " was written by " +
+                                             std::to_string(r.progress.pieces) + " ranks, one file each)");
+                pieces.push_back(io::readCheckpoint(piece).world);
+            }
+            try {
+                r.checkpoint.world = joinCheckpointPieces(std::move(r.checkpoint.world), pieces);
+            } catch (const std::runtime_error& e) {
+                throw std::runtime_error(files[0].string() + ": " + e.what());
+            }
+        }
     } catch (const std::exception& e) {
         throw ResumeError{std::string(e.what()) + "; refusing to resume, nothing was changed" + older};
     }
@@ -185,6 +200,21 @@ void writeSplitFrame(comm::Communicator& comm, const World& world, const fs::pat
         if (format != io::Format::Vtu || gather) io::writeFrame(dir / frameName(frame, format), format, all, surface);
 }
 
+/// A split run's checkpoint: each rank K > 0 writes its piece, then (once all are written)
+/// rank 0 its own with the run's progress, and prunes. Collective.
+void writeSplitCheckpoint(comm::Communicator& comm, const World& world, const fs::path& dir, int frame,
+                          const std::string& progress, int realStderr) {
+    try {
+        if (comm.rank() > 0) io::writeCheckpoint(checkpointPiece(dir, frame, comm.rank()), world.saveState(), "");
+    } catch (const std::exception& e) {
+        abortRanks(comm, realStderr, kExitRunFailed, e.what());
+    }
+    comm.barrier();
+    if (comm.rank() != 0) return;
+    io::writeCheckpoint(checkpointFile(dir, frame), world.saveState(), progress);
+    pruneCheckpoints(dir);
+}
+
 }  // namespace
 
 int runCommand(const RunOptions& o, comm::Communicator* comm) {
@@ -200,11 +230,6 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
             ::close(devNull);
         }
     }
-    if (split && (!o.resume.empty() || o.checkpointEvery > 0)) {
-        std::fprintf(stderr, "tide: %s under mpirun: checkpoints of a split run are not built yet; run without them\n",
-                     o.resume.empty() ? "--checkpoint-every" : "--resume");
-        return kExitBadInput;
-    }
     io::Scene scene;
     try {
         scene = io::loadScene(o.scene);
@@ -214,12 +239,16 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
     }
     const bool resuming = !o.resume.empty();
     std::optional<Resumption> resumed;
+    int unreadable = kExitOk;
     try {
         if (resuming) resumed = loadNewestCheckpoint(o.resume);
     } catch (const ResumeError& e) {
         std::fprintf(stderr, "tide: %s\n", e.message.c_str());
-        return kExitBadInput;
+        unreadable = kExitBadInput;
     }
+    // Every rank reads every piece; should one fail alone, all still end with its code.
+    if (split) unreadable = static_cast<int>(comm->max(unreadable));
+    if (unreadable != kExitOk) return unreadable;
     // A resumed run keeps the choices it was started with, unless they are given again.
     const double sceneEndTime = scene.endTime;
     if (o.endTime) scene.endTime = *o.endTime;
@@ -267,11 +296,6 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
     std::optional<World> world;
     RunProgress done;  // what earlier sessions of this run did (nothing for a new run)
     const std::uint32_t crc = sceneCrc(o.scene);
-    if (split && Measurements(scene).any()) {
-        std::fprintf(stderr, "%s: gauges and probes cannot be split among processes yet; run it without mpirun\n",
-                     o.scene.c_str());
-        return kExitBadInput;
-    }
     int failure = kExitOk;  // every rank must agree before the first step, which they take together
     try {
         world.emplace(io::buildWorld(scene));
@@ -288,7 +312,7 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
             } catch (const std::invalid_argument& e) {
                 throw ResumeError{file + ": " + e.what()};
             }
-            removeStaleTemporaries(dir);  // a killed run's half-written files
+            if (lead) removeStaleTemporaries(dir);  // a killed run's half-written files
         }
         if (split) distributeWorld(*world, *comm);  // the same refusals on every rank, before any file
         if (!resumed && lead) prepareOutputFolder(dir, o.force);
@@ -339,8 +363,11 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
     io::PvdWriter pvd(dir / "frames.pvd");
     const bool vtu = std::find(scene.output.formats.begin(), scene.output.formats.end(), io::Format::Vtu) !=
                      scene.output.formats.end();
+    // The frames before a resumption, as written: a split run's .pvtu or one .vtu.
     if (vtu)
-        for (int frame = 0; frame < firstFrame; ++frame) pvd.add(frame / scene.output.fps, frameName(frame, io::Format::Vtu));
+        for (int frame = 0; frame < firstFrame; ++frame)
+            pvd.add(frame / scene.output.fps,
+                    fs::exists(dir / pvtuName(frame)) ? pvtuName(frame) : frameName(frame, io::Format::Vtu));
     std::uint64_t particleSteps = done.particleSteps;
     std::uint64_t sessionSteps = 0;  // this session's, for the progress rate
     std::uint32_t lost = done.lost;
@@ -371,7 +398,7 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
                 pvd.add(frame / scene.output.fps, split && !o.gather ? pvtuName(frame) : frameName(frame, io::Format::Vtu));
                 pvd.write();
             }
-            measurements.sample(*world, world->time());
+            measurements.sample(*world, world->time(), split ? comm : nullptr);
             lost = std::max(lost, world->countEscapedParticles());
             lastFrame = frame;
             if (!reportedFull && world->stats().emitterCapacityHits > 0) {
@@ -393,9 +420,14 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
                                       scene.world.solver.method,
                                       checkpointEvery,
                                       scene.endTime,
-                                      formatNames};
-                io::writeCheckpoint(checkpointFile(dir, frame), world->saveState(), encodeRunProgress(now));
-                pruneCheckpoints(dir);
+                                      formatNames,
+                                      split ? comm->size() : 1};
+                if (split) {
+                    writeSplitCheckpoint(*comm, *world, dir, frame, encodeRunProgress(now), realStderr);
+                } else {
+                    io::writeCheckpoint(checkpointFile(dir, frame), world->saveState(), encodeRunProgress(now));
+                    pruneCheckpoints(dir);
+                }
             }
             progress.frame(world->time(), frame, split ? static_cast<std::uint32_t>(totalParticles) : world->particles().size(),
                            sessionSteps);

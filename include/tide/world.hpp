@@ -13,6 +13,7 @@
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <tide/defs.hpp>
@@ -23,6 +24,7 @@ namespace tide {
 namespace comm {
 class Communicator;
 }
+struct FieldSamples;  // a split World's gauges and probes (src/core/world_distributed.hpp)
 
 /// Why addBlock() added nothing.
 enum class AddStatus {
@@ -388,12 +390,16 @@ public:
 
     /// The divergence the last step found, if any (cleared by clear() and restoreState()).
     [[nodiscard]] const std::optional<Divergence>& divergence() const;
-    /// A copy of everything that evolves (see WorldState), for checkpoints.
+    /// A copy of everything that evolves (see WorldState), for checkpoints. In a World split
+    /// among processes: this rank's piece (the particles it owns; the rest is the same on
+    /// every rank). The pieces of all ranks, their particles joined, restore into an unsplit
+    /// World built from the same definitions, which may then be split among any number.
     [[nodiscard]] WorldState saveState() const;
     /// Continue from a saved state. The World must have been built from the same definitions
     /// (materials, emitters, solver); a state that does not fit them (array sizes, material
     /// indices, emitter count, capacity, solver scalars) throws std::invalid_argument naming
-    /// the mismatch and leaves the World unchanged.
+    /// the mismatch and leaves the World unchanged. A split World throws std::logic_error
+    /// (restore first, then split).
     void restoreState(WorldState state);
 
     struct Impl;  ///< the state (src/core/world_impl.hpp)
@@ -403,6 +409,8 @@ private:
     friend void distributeWorld(World& world, comm::Communicator& comm);
     friend ParticleStore gatherOwnedParticles(const World& world, comm::Communicator& comm);
     friend std::vector<std::uint32_t> ownedIndices(const World& world);
+    friend FieldSamples sampleOverRanks(const World& world, comm::Communicator& comm,
+                                         std::span<const glm::vec2> gauges, std::span<const glm::vec3> probes);
     std::unique_ptr<Impl> impl_;
 };
 

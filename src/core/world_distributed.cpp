@@ -7,6 +7,7 @@
 
 #include "comm/domain_split.hpp"
 #include "comm/particle_records.hpp"
+#include "core/field_sampling.hpp"
 #include "core/world_impl.hpp"
 #include "loads/solid_loads.hpp"
 
@@ -162,6 +163,35 @@ ParticleStore ownedParticles(const World& world) {
     comm::appendPacked(own, comm::packParticles(world.particles(), ownedIndices(world)));
     sortById(own);
     return own;
+}
+
+FieldSamples sampleOverRanks(const World& world, comm::Communicator& comm, std::span<const glm::vec2> gauges,
+                             std::span<const glm::vec3> probes) {
+    const World::Impl& w = *world.impl_;
+    const float h2 = w.h * w.h;
+    const auto near = [&](const glm::vec3& x) {
+        for (const glm::vec2& g : gauges)
+            if ((x.x - g.x) * (x.x - g.x) + (x.z - g.y) * (x.z - g.y) < h2) return true;
+        for (const glm::vec3& p : probes)
+            if (glm::dot(x - p, x - p) < h2) return true;
+        return false;
+    };
+    std::vector<std::uint32_t> sent;
+    for (const std::uint32_t i : ownedIndices(world))
+        if (near(w.particles.position[i])) sent.push_back(i);
+    const std::vector<comm::Bytes> blocks = comm.gatherToRoot(comm::packParticles(w.particles, sent));
+    FieldSamples samples;
+    if (comm.rank() != 0) return samples;
+    ParticleStore nearby;
+    for (const comm::Bytes& b : blocks) comm::appendPacked(nearby, b);
+    sortById(nearby);
+    for (const glm::vec2& g : gauges)
+        samples.heights.push_back(freeSurfaceHeight(nearby, w.materials, w.periodic, w.kernel(), g.x, g.y));
+    for (const glm::vec3& p : probes) {
+        const FieldSample f = sampleField(nearby, w.materials, w.periodic, w.kernel(), p);
+        samples.probes.push_back({f.density, f.pressure, f.velocity});
+    }
+    return samples;
 }
 
 RankCounts gatherRankCounts(const World& world, comm::Communicator& comm) {

@@ -11,6 +11,10 @@
 /// obstacles and their loads (exact sums over ranks); anything else is refused when the World is
 /// distributed.
 
+#include <span>
+
+#include <glm/vec2.hpp>
+
 #include <tide/particles.hpp>
 #include <tide/world.hpp>
 
@@ -31,6 +35,18 @@ std::vector<std::uint32_t> ownedIndices(const World& world);
 
 /// This rank's own particles (not its ghosts), ordered by id: its piece of a frame.
 ParticleStore ownedParticles(const World& world);
+
+/// Wave gauges and probes of a split World: World::surfaceHeight at each gauge's (x, z) and
+/// World::probe at each point, over every rank's particles. Each rank sends rank 0 the
+/// particles it owns within a support of a gauge's vertical line or a probe's point; rank 0
+/// evaluates them ordered by id, so the values are the same on any number of ranks (the other
+/// ranks get empty lists). Collective.
+struct FieldSamples {
+    std::vector<float> heights;       ///< m; NaN for a dry gauge
+    std::vector<ProbeSample> probes;  ///< NaN where no fluid is within a support
+};
+FieldSamples sampleOverRanks(const World& world, comm::Communicator& comm, std::span<const glm::vec2> gauges,
+                             std::span<const glm::vec3> probes);
 
 /// Particles each rank owns and the ghosts it holds now, on rank 0 (the others get empty
 /// lists). Collective.

@@ -50,6 +50,15 @@ WorldState World::saveState() const {
     s.stepsSinceReorder = w.stepsSinceReorder;
     s.stats = w.stats;
     s.particles = w.particles;
+    if (w.distribution) {
+        // A split World's piece of the state: the particles this rank owns, not the copies
+        // of its neighbours' (issue 47: each rank writes its own, any number of ranks reads
+        // them all back; core/world_distributed.hpp).
+        std::vector<std::uint8_t> owned(s.particles.size());
+        const std::vector<std::uint8_t>& ghost = *ghostFlags(w);
+        for (std::size_t i = 0; i < owned.size(); ++i) owned[i] = ghost[i] ? 0 : 1;
+        s.particles.retain(owned);
+    }
     for (const EmitterState& e : w.emitters) s.emitters.push_back({e.active, e.travelled});
     s.solverState = w.solver->carriedState();
     if (w.bodySystem) s.bodyState = w.bodySystem->saveState();
@@ -111,6 +120,8 @@ void checkFits(const WorldState& s, std::size_t materials, std::size_t emitters,
 
 void World::restoreState(WorldState state) {
     Impl& w = *impl_;
+    if (w.distribution)
+        throw std::logic_error("restoreState: restore the whole state before distributeWorld splits the World");
     checkFits(state, w.materials.size(), w.emitters.size(), w.def.capacity);
     std::size_t absorbers = 0;
     for (const Impl::Paddle& paddle : w.paddles) absorbers += paddle.absorber ? 1 : 0;
