@@ -31,6 +31,8 @@ struct RunOptions {
     int checkpointEvery = 0;              ///< frames between checkpoints; 0: none
     std::string resume;                   ///< output folder of a stopped run to continue; empty: a new run
     bool gather = false;                  ///< split run: VTU frames gathered into one file, not a piece per rank
+    int rebalanceEvery = 0;               ///< split run: re-cut the ranks' boxes every N steps; 0: when the load drifts
+    double rebalanceAbove = 1.2;          ///< split run: re-cut when the busiest rank owns this times the mean
 };
 
 struct RenderOptions {

@@ -29,12 +29,21 @@ int main(int argc, char** argv) {
     runApp->add_flag("--force", run.force, "Write into a folder that holds another run, replacing its frames");
     runApp->add_flag("--quiet", run.quiet, "No progress output");
     runApp->add_option("--checkpoint-every", run.checkpointEvery,
-                       "Write OUT/checkpoint_NNNNN.tidecp every N frames (the newest two are kept)")
+                       "Write OUT/checkpoint_NNNNN.tidecp every N frames (the newest two are kept); under mpirun each\n"
+                       "rank K > 0 adds its piece checkpoint_NNNNN_rK.tidecp, and any number of ranks can resume")
         ->check(CLI::Range(1, 1 << 30));
     runApp->add_option("--resume", run.resume,
                        "Continue the stopped run in this folder from its newest checkpoint (same scene; it keeps its\n"
                        "end time, formats, solver and checkpoint interval unless given again); its frames come out\n"
                        "bit-identical to an uninterrupted run's");
+    runApp->add_option("--rebalance-every", run.rebalanceEvery,
+                       "Under mpirun: cut the ranks' boxes again every N steps (default 0: only when the load drifts,\n"
+                       "see --rebalance-above); results do not change, only which rank steps which particle")
+        ->check(CLI::Range(0, 1 << 30));
+    runApp->add_option("--rebalance-above", run.rebalanceAbove,
+                       "Under mpirun: cut the boxes again when the busiest rank owns this many times the mean number\n"
+                       "of particles (default 1.2)")
+        ->check(CLI::Range(1.0, 1e9));
     runApp->add_flag("--gather", run.gather,
                      "Under mpirun: VTU frames gathered into one frame_NNNNN.vtu instead of a piece per rank and a .pvtu");
     runApp->footer("On a terminal a progress bar shows simulated time, frame, particles, particle-steps/s and\n"

@@ -46,6 +46,7 @@ std::string frameName(int frame, io::Format format) {
 struct RanksReport {
     int ranks = 1;
     RankCounts counts;
+    std::uint64_t stepsRun = 0;  ///< steps this process ran (the traffic counts are its own)
 };
 
 void writeStats(const fs::path& file, const World& world, std::uint64_t particles, double wall,
@@ -90,6 +91,15 @@ void writeStats(const fs::path& file, const World& world, std::uint64_t particle
             total += static_cast<double>(n);
         }
         j["load_imbalance"] = total > 0.0 ? most * ranks->ranks / total : 1.0;
+        // What each rank sent the others in the steps' exchanges (migration, ghosts, ghost
+        // refreshes inside the pressure solve), over the steps this process ran.
+        const double steps = static_cast<double>(std::max<std::uint64_t>(ranks->stepsRun, 1));
+        j["rank_bytes_sent"] = ranks->counts.bytesSent;
+        j["rank_messages_sent"] = ranks->counts.messagesSent;
+        std::vector<double> perStep;
+        for (const std::uint64_t b : ranks->counts.bytesSent) perStep.push_back(static_cast<double>(b) / steps);
+        j["rank_bytes_per_step"] = perStep;
+        j["rebalances"] = ranks->counts.rebalances;
     }
     io::writeFileAtomically(file, [&](std::ostream& out) { out << j.dump(2) << '\n'; });
 }
@@ -314,7 +324,7 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
             }
             if (lead) removeStaleTemporaries(dir);  // a killed run's half-written files
         }
-        if (split) distributeWorld(*world, *comm);  // the same refusals on every rank, before any file
+        if (split) distributeWorld(*world, *comm, DistributionOptions{o.rebalanceEvery, o.rebalanceAbove});  // the same refusals on every rank, before any file
         if (!resumed && lead) prepareOutputFolder(dir, o.force);
     } catch (const io::SceneError& e) {
         reportSceneProblems(o.scene, e.problems);
@@ -370,6 +380,7 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
                     fs::exists(dir / pvtuName(frame)) ? pvtuName(frame) : frameName(frame, io::Format::Vtu));
     std::uint64_t particleSteps = done.particleSteps;
     std::uint64_t sessionSteps = 0;  // this session's, for the progress rate
+    std::uint64_t stepsRun = 0;      // this session's steps
     std::uint32_t lost = done.lost;
     bool reportedFull = false;
     Measurements measurements(scene);
@@ -385,6 +396,7 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
                     const std::uint64_t n = split ? totalParticles : world->particles().size();
                     particleSteps += n;
                     sessionSteps += n;
+                    ++stepsRun;
                     progress.step(world->time(), frame, static_cast<std::uint32_t>(n), sessionSteps);
                 });
             }
@@ -435,7 +447,7 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
         progress.finish();
         const double wall = wallSoFar();
         std::optional<RanksReport> ranks;
-        if (split) ranks = RanksReport{comm->size(), gatherRankCounts(*world, *comm)};
+        if (split) ranks = RanksReport{comm->size(), gatherRankCounts(*world, *comm), stepsRun};
         if (lead) {
             measurements.write(dir);
             writeStats(dir / "stats.json", *world, split ? totalParticles : world->particles().size(), wall, particleSteps,

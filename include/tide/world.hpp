@@ -24,7 +24,9 @@ namespace tide {
 namespace comm {
 class Communicator;
 }
-struct FieldSamples;  // a split World's gauges and probes (src/core/world_distributed.hpp)
+struct FieldSamples;
+struct DistributionOptions;
+struct RankCounts;  // a split World's gauges and probes (src/core/world_distributed.hpp)
 
 /// Why addBlock() added nothing.
 enum class AddStatus {
@@ -406,7 +408,8 @@ public:
 
 private:
     // A run split among processes (src/core/world_distributed.hpp) reaches into the state.
-    friend void distributeWorld(World& world, comm::Communicator& comm);
+    friend void distributeWorld(World& world, comm::Communicator& comm, const DistributionOptions& options);
+    friend RankCounts gatherRankCounts(const World& world, comm::Communicator& comm);
     friend ParticleStore gatherOwnedParticles(const World& world, comm::Communicator& comm);
     friend std::vector<std::uint32_t> ownedIndices(const World& world);
     friend FieldSamples sampleOverRanks(const World& world, comm::Communicator& comm,

@@ -26,9 +26,18 @@ struct Message {
     Bytes bytes;
 };
 
+/// What a rank has sent to other ranks through `exchange` (migration, ghosts, ghost
+/// refreshes): the traffic a step costs. Reductions, gathers and broadcasts are not counted.
+struct Traffic {
+    std::uint64_t bytes = 0;
+    std::uint64_t messages = 0;
+};
+
 class Communicator {
 public:
     virtual ~Communicator() = default;
+
+    [[nodiscard]] const Traffic& traffic() const { return traffic_; }
 
     [[nodiscard]] virtual int rank() const = 0;
     [[nodiscard]] virtual int size() const = 0;
@@ -59,6 +68,15 @@ public:
     /// Ends every rank of the job with `code` (a failing rank must never leave the others
     /// waiting in a collective).
     [[noreturn]] virtual void abort(int code) = 0;
+
+protected:
+    void countSent(std::size_t bytes) {
+        traffic_.bytes += bytes;
+        ++traffic_.messages;
+    }
+
+private:
+    Traffic traffic_;
 };
 
 /// One process: rank 0 of 1.

@@ -22,11 +22,14 @@ int intervalDistance(int blo, int bhi, int clo, int chi) { return std::max({0, c
 
 }  // namespace
 
-DomainSplit::DomainSplit(const CellGrid& grid, const glm::vec3& origin, float cellSize, std::vector<CellBox> boxes,
+DomainSplit::DomainSplit(const CellGrid& grid, const glm::vec3& origin, const glm::vec3& cellSize, std::vector<CellBox> boxes,
                          int ghostCells)
     : grid_(grid), origin_(origin), cellSize_(cellSize), boxes_(std::move(boxes)), ghostCells_(ghostCells),
       neighbours_(boxes_.size()) {
-    if (!(cellSize > 0.0f)) throw std::invalid_argument("domain split: cell size must be positive, got " + std::to_string(cellSize));
+    for (int a = 0; a < 3; ++a)
+        if (!(cellSize[a] > 0.0f))
+            throw std::invalid_argument("domain split: cell size must be positive, got " + std::to_string(cellSize[a]) +
+                                        " on axis " + std::to_string(a));
     if (ghostCells < 1) throw std::invalid_argument("domain split: ghost depth must be at least 1 cell, got " + std::to_string(ghostCells));
     for (std::size_t r = 0; r < boxes_.size(); ++r)
         for (std::size_t o = 0; o < boxes_.size(); ++o) {
@@ -48,7 +51,7 @@ std::array<int, 3> DomainSplit::cellOf(const glm::vec3& x) const {
     std::array<int, 3> cell{};
     for (int a = 0; a < 3; ++a) {
         const int n = grid_.cells[a];
-        const double t = std::floor(static_cast<double>(x[a] - origin_[a]) / cellSize_);
+        const double t = std::floor(static_cast<double>(x[a] - origin_[a]) / cellSize_[a]);
         const int c = std::isfinite(t) ? static_cast<int>(std::clamp(t, -1e9, 1e9)) : 0;
         cell[a] = grid_.periodic[a] ? ((c % n) + n) % n : std::clamp(c, 0, n - 1);
     }

@@ -29,14 +29,21 @@ namespace tide::comm {
 
 class DomainSplit {
 public:
-    /// `origin` is the grid's lower corner, `cellSize` its cells' width (one kernel support),
-    /// `ghostCells` the depth of the ghost ring in cells (2 where walls take the pressure of
-    /// the fluid around them: a wall particle within h of an owned particle sums fluid up to
-    /// 2h from it).
-    DomainSplit(const CellGrid& grid, const glm::vec3& origin, float cellSize, std::vector<CellBox> boxes,
+    /// `origin` is the grid's lower corner, `cellSize` its cells' width on each axis (at least
+    /// one kernel support; on a periodic axis the period over a whole number of cells, so the
+    /// ring across the seam is as deep as anywhere else), `ghostCells` the depth of the ghost
+    /// ring in cells (2 where walls take the pressure of the fluid around them: a wall particle
+    /// within h of an owned particle sums fluid up to 2h from it).
+    DomainSplit(const CellGrid& grid, const glm::vec3& origin, const glm::vec3& cellSize, std::vector<CellBox> boxes,
                 int ghostCells = 1);
+    /// Cubic cells.
+    DomainSplit(const CellGrid& grid, const glm::vec3& origin, float cellSize, std::vector<CellBox> boxes,
+                int ghostCells = 1)
+        : DomainSplit(grid, origin, glm::vec3(cellSize), std::move(boxes), ghostCells) {}
 
     [[nodiscard]] const CellGrid& grid() const { return grid_; }
+    [[nodiscard]] const glm::vec3& origin() const { return origin_; }
+    [[nodiscard]] const glm::vec3& cellSize() const { return cellSize_; }
     [[nodiscard]] const std::vector<CellBox>& boxes() const { return boxes_; }
     [[nodiscard]] int ranks() const { return static_cast<int>(boxes_.size()); }
 
@@ -55,7 +62,7 @@ public:
 private:
     CellGrid grid_;
     glm::vec3 origin_;
-    float cellSize_;
+    glm::vec3 cellSize_;
     std::vector<CellBox> boxes_;
     int ghostCells_;
     std::vector<std::vector<int>> neighbours_;

@@ -87,6 +87,7 @@ public:
                 throw std::invalid_argument("mpi communicator: a message from rank " + std::to_string(rank_) +
                                             " to rank " + std::to_string(m.rank) + " of " + std::to_string(size_));
             sendBytes[static_cast<std::size_t>(m.rank)] = static_cast<long long>(m.bytes.size()) + 1;  // +1: "a message"
+            countSent(m.bytes.size());
         }
         MPI_Alltoall(sendBytes.data(), 1, MPI_LONG_LONG, recvBytes.data(), 1, MPI_LONG_LONG, MPI_COMM_WORLD);
         std::vector<Message> incoming;

@@ -23,6 +23,18 @@ struct WorldDistribution final : StepSharing {
     comm::HaloPlan halo;
     std::vector<std::uint8_t> ghost;  ///< per particle of the store: 1 for a ghost
     glm::vec3 anchor{0.0f};
+    DistributionOptions options;
+    int stepsSinceCut = 0;
+    double imbalanceAfterCut = 1.0;  ///< max/mean owned particles the last cut left
+    double imbalanceNow = 1.0;       ///< as dueForRecut measured it
+    std::uint64_t recuts = 0;        ///< re-cuts that moved a box
+
+    /// Whether the boxes are cut again before this step's migration: the same answer on
+    /// every rank (from reductions). `owned` is this rank's particle count.
+    bool dueForRecut(std::uint32_t owned);
+    /// Cuts the boxes again from where the owned particles are now (collective): rank 0
+    /// gathers every rank's particles per cell, partitions, and sends the boxes round.
+    void recut(const ParticleStore& owned);
 
     void refreshGhosts(std::span<float> field) const override { halo.refresh(field, *comm); }
     void refreshGhosts(std::span<glm::vec3> field) const override { halo.refresh(field, *comm); }
@@ -41,6 +53,70 @@ struct WorldDistribution final : StepSharing {
     }
 };
 
+bool WorldDistribution::dueForRecut(std::uint32_t owned) {
+    ++stepsSinceCut;
+    if (comm->size() == 1) return false;
+    if (options.rebalanceEvery > 0 && stepsSinceCut >= options.rebalanceEvery) return true;
+    const double most = comm->max(static_cast<double>(owned));
+    const double total = static_cast<double>(comm->sum(std::int64_t{owned}));
+    const double imbalance = total > 0.0 ? most * comm->size() / total : 1.0;
+    imbalanceNow = imbalance;
+    return imbalance > options.rebalanceAbove && imbalance > 1.05 * imbalanceAfterCut;
+}
+
+void WorldDistribution::recut(const ParticleStore& owned) {
+    stepsSinceCut = 0;
+    const comm::CellGrid grid = split->grid();  // a copy: the split is replaced below
+    // Sparse counts: (cell index, particles) for the cells this rank's particles are in.
+    std::vector<std::int64_t> cells(owned.size());
+    for (std::uint32_t i = 0; i < owned.size(); ++i) cells[i] = split->cellIndexOf(owned.position[i]);
+    std::sort(cells.begin(), cells.end());
+    std::vector<std::int64_t> counts;
+    for (std::size_t i = 0; i < cells.size();) {
+        std::size_t j = i;
+        while (j < cells.size() && cells[j] == cells[i]) ++j;
+        counts.push_back(cells[i]);
+        counts.push_back(static_cast<std::int64_t>(j - i));
+        i = j;
+    }
+    const std::vector<comm::Bytes> blocks = comm->gatherToRoot(std::as_bytes(std::span(counts)));
+    // Rank 0's answer: the imbalance the boxes leave, then the boxes (none: keep the old ones).
+    comm::Bytes answer;
+    if (comm->rank() == 0) {
+        std::vector<std::uint64_t> cost(static_cast<std::size_t>(grid.cellCount()), 0);
+        for (const comm::Bytes& b : blocks) {
+            std::vector<std::int64_t> pairs(b.size() / sizeof(std::int64_t));
+            std::memcpy(pairs.data(), b.data(), pairs.size() * sizeof(std::int64_t));
+            for (std::size_t k = 0; k + 1 < pairs.size(); k += 2) cost[static_cast<std::size_t>(pairs[k])] += static_cast<std::uint64_t>(pairs[k + 1]);
+        }
+        try {
+            const std::vector<comm::CellBox> boxes = comm::partitionRcb(grid, cost, comm->size());
+            const double imbalance = comm::loadImbalance(comm::rankLoads(grid, cost, boxes, split->ghostCells()));
+            answer.resize(sizeof imbalance + boxes.size() * sizeof(comm::CellBox));
+            std::memcpy(answer.data(), &imbalance, sizeof imbalance);
+            std::memcpy(answer.data() + sizeof imbalance, boxes.data(), boxes.size() * sizeof(comm::CellBox));
+        } catch (const std::invalid_argument&) {
+            // The water gathered where fewer boxes than ranks can hold it: keep the cut.
+        }
+    }
+    answer = comm->broadcastFromRoot(std::move(answer));
+    if (answer.empty()) {
+        imbalanceAfterCut = imbalanceNow;  // the best there is: try again when it drifts further
+        return;
+    }
+    std::memcpy(&imbalanceAfterCut, answer.data(), sizeof imbalanceAfterCut);
+    std::vector<comm::CellBox> boxes((answer.size() - sizeof(double)) / sizeof(comm::CellBox));
+    std::memcpy(boxes.data(), answer.data() + sizeof(double), boxes.size() * sizeof(comm::CellBox));
+    const bool moved = !std::equal(boxes.begin(), boxes.end(), split->boxes().begin(), split->boxes().end(),
+                                   [](const comm::CellBox& a, const comm::CellBox& b) { return a.lo == b.lo && a.hi == b.hi; });
+    if (!moved) return;
+    const glm::vec3 origin = split->origin();
+    const glm::vec3 cellSize = split->cellSize();
+    const int ghostCells = split->ghostCells();
+    split.emplace(grid, origin, cellSize, std::move(boxes), ghostCells);
+    ++recuts;
+}
+
 namespace {
 
 void refuse(const std::string& what) {
@@ -49,30 +125,44 @@ void refuse(const std::string& what) {
 
 }  // namespace
 
-void distributeWorld(World& world, comm::Communicator& comm) {
+void distributeWorld(World& world, comm::Communicator& comm, const DistributionOptions& options) {
     World::Impl& w = *world.impl_;
+    if (options.rebalanceEvery < 0)
+        throw std::invalid_argument("rebalance every: must be 0 (by load) or a number of steps, got " +
+                                    std::to_string(options.rebalanceEvery));
+    if (!(options.rebalanceAbove >= 1.0))
+        throw std::invalid_argument("rebalance above: a load imbalance (max/mean) must be at least 1, got " +
+                                    std::to_string(options.rebalanceAbove));
     const std::string& method = w.def.solver.method;
     if (method != "wcsph" && method != "dfsph" && method != "pcisph")
         refuse("solver.method \"" + method + "\" (wcsph, dfsph and pcisph can)");
-    if (!w.emitters.empty()) refuse("an emitter");
-    if (w.bodySystem) refuse("a floating body");
-    if (!w.paddles.empty()) refuse("a wave maker");
-    if (!w.movers.empty()) refuse("a moving obstacle");
     if (w.zones) refuse("an ocean");
-    if (w.periodic.any) refuse("a periodic axis");
     if (w.pairTables.anyDiffusion()) refuse("dye diffusion");
 
     auto d = std::make_shared<WorldDistribution>();
     d->comm = &comm;
+    d->options = options;
     d->anchor = w.def.domainMin;
+    // Cells a support wide; on a periodic axis the period in whole cells (at least a support
+    // wide each), so that the ghost ring reaches as far across the seam as elsewhere.
     comm::CellGrid grid;
-    for (int a = 0; a < 3; ++a)
-        grid.cells[a] = std::max(1, static_cast<int>(std::ceil((w.def.domainMax[a] - w.def.domainMin[a]) / w.h)));
+    glm::vec3 cellSize(w.h);
+    for (int a = 0; a < 3; ++a) {
+        const float length = w.def.domainMax[a] - w.def.domainMin[a];
+        grid.periodic[static_cast<std::size_t>(a)] = w.periodic.periodic(a);
+        if (w.periodic.periodic(a)) {
+            grid.cells[a] = std::max(1, static_cast<int>(std::floor(length / w.h)));
+            cellSize[a] = length / static_cast<float>(grid.cells[a]);
+        } else {
+            grid.cells[a] = std::max(1, static_cast<int>(std::ceil(length / w.h)));
+        }
+    }
     // Every rank holds every particle now: the same costs, the same partition on each.
-    comm::DomainSplit probe(grid, w.def.domainMin, w.h, {comm::CellBox{{0, 0, 0}, grid.cells}}, kGhostCells);
+    comm::DomainSplit probe(grid, w.def.domainMin, cellSize, {comm::CellBox{{0, 0, 0}, grid.cells}}, kGhostCells);
     std::vector<std::uint64_t> cost(static_cast<std::size_t>(grid.cellCount()), 0);
     for (const glm::vec3& x : w.particles.position) ++cost[static_cast<std::size_t>(probe.cellIndexOf(x))];
-    d->split.emplace(grid, w.def.domainMin, w.h, comm::partitionRcb(grid, cost, comm.size()), kGhostCells);
+    d->split.emplace(grid, w.def.domainMin, cellSize, comm::partitionRcb(grid, cost, comm.size()), kGhostCells);
+    d->imbalanceAfterCut = comm::loadImbalance(comm::rankLoads(grid, cost, d->split->boxes(), kGhostCells));
     std::vector<std::uint8_t> keep(w.particles.size());
     for (std::uint32_t i = 0; i < w.particles.size(); ++i)
         keep[i] = d->split->ownerOf(d->split->cellOf(w.particles.position[i])) == comm.rank() ? 1 : 0;
@@ -86,6 +176,7 @@ const glm::vec3* exchangeParticles(World::Impl& w) {
     std::vector<std::uint8_t> owned(d.ghost.size());
     for (std::size_t i = 0; i < owned.size(); ++i) owned[i] = d.ghost[i] ? 0 : 1;
     w.particles.retain(owned);
+    if (d.dueForRecut(w.particles.size())) d.recut(w.particles);
     comm::migrate(w.particles, *d.split, *d.comm);
     d.halo = comm::appendGhosts(w.particles, *d.split, *d.comm);
     d.halo.follow(comm::sortByCellThenId(w.particles, *d.split));
@@ -93,6 +184,16 @@ const glm::vec3* exchangeParticles(World::Impl& w) {
     for (const auto& link : d.halo.links())
         for (const std::uint32_t i : link.receive) d.ghost[i] = 1;
     return &d.anchor;
+}
+
+void keepOwnedFrom(World::Impl& w, std::uint32_t first) {
+    WorldDistribution& d = *w.distribution;
+    const int self = d.comm->rank();
+    std::vector<std::uint8_t> keep(w.particles.size(), 1);
+    for (std::uint32_t i = first; i < w.particles.size(); ++i)
+        keep[i] = d.split->ownerOf(d.split->cellOf(w.particles.position[i])) == self ? 1 : 0;
+    w.particles.retain(keep);  // the particles before `first` (and the halo's indices) stay
+    d.ghost.resize(w.particles.size(), 0);
 }
 
 const StepSharing* stepSharing(const World::Impl& w) { return w.distribution.get(); }
@@ -129,14 +230,19 @@ std::vector<SolidLoad> solidLoadsOverRanks(const World::Impl& w, double dt) {
     return solidLoadsOf(terms);
 }
 
-std::vector<std::uint32_t> ownedIndices(const World& world) {
-    const World::Impl& w = *world.impl_;
+namespace {
+
+std::vector<std::uint32_t> ownedIndicesOf(const World::Impl& w) {
     std::vector<std::uint32_t> owned;
     owned.reserve(w.particles.size());
     for (std::uint32_t i = 0; i < w.particles.size(); ++i)
         if (!w.distribution || !w.distribution->ghost[i]) owned.push_back(i);
     return owned;
 }
+
+}  // namespace
+
+std::vector<std::uint32_t> ownedIndices(const World& world) { return ownedIndicesOf(*world.impl_); }
 
 namespace {
 
@@ -148,7 +254,36 @@ void sortById(ParticleStore& all) {
     all.permute(order);
 }
 
+/// The owned particles of every rank for which `near` holds, on rank 0 ordered by id (empty
+/// on the others). Collective.
+template <class Near>
+ParticleStore gatherNear(const World::Impl& w, comm::Communicator& comm, const Near& near) {
+    const ParticleStore& particles = w.particles;
+    std::vector<std::uint32_t> sent;
+    for (const std::uint32_t i : ownedIndicesOf(w))
+        if (near(particles.position[i])) sent.push_back(i);
+    const std::vector<comm::Bytes> blocks = comm.gatherToRoot(comm::packParticles(particles, sent));
+    ParticleStore nearby;
+    for (const comm::Bytes& b : blocks) comm::appendPacked(nearby, b);
+    sortById(nearby);
+    return nearby;
+}
+
 }  // namespace
+
+float surfaceHeightOverRanks(const World::Impl& w, float x, float z) {
+    comm::Communicator& comm = *w.distribution->comm;
+    const float h2 = w.h * w.h;
+    const ParticleStore nearby =
+        gatherNear(w, comm, [&](const glm::vec3& p) { return (p.x - x) * (p.x - x) + (p.z - z) * (p.z - z) < h2; });
+    float height = 0.0f;
+    if (comm.rank() == 0) height = freeSurfaceHeight(nearby, w.materials, w.periodic, w.kernel(), x, z);
+    comm::Bytes bytes(sizeof height);
+    std::memcpy(bytes.data(), &height, sizeof height);
+    bytes = comm.broadcastFromRoot(std::move(bytes));
+    std::memcpy(&height, bytes.data(), sizeof height);
+    return height;
+}
 
 ParticleStore gatherOwnedParticles(const World& world, comm::Communicator& comm) {
     const std::vector<comm::Bytes> blocks = comm.gatherToRoot(comm::packParticles(world.particles(), ownedIndices(world)));
@@ -176,15 +311,9 @@ FieldSamples sampleOverRanks(const World& world, comm::Communicator& comm, std::
             if (glm::dot(x - p, x - p) < h2) return true;
         return false;
     };
-    std::vector<std::uint32_t> sent;
-    for (const std::uint32_t i : ownedIndices(world))
-        if (near(w.particles.position[i])) sent.push_back(i);
-    const std::vector<comm::Bytes> blocks = comm.gatherToRoot(comm::packParticles(w.particles, sent));
+    const ParticleStore nearby = gatherNear(w, comm, near);
     FieldSamples samples;
     if (comm.rank() != 0) return samples;
-    ParticleStore nearby;
-    for (const comm::Bytes& b : blocks) comm::appendPacked(nearby, b);
-    sortById(nearby);
     for (const glm::vec2& g : gauges)
         samples.heights.push_back(freeSurfaceHeight(nearby, w.materials, w.periodic, w.kernel(), g.x, g.y));
     for (const glm::vec3& p : probes) {
@@ -195,15 +324,20 @@ FieldSamples sampleOverRanks(const World& world, comm::Communicator& comm, std::
 }
 
 RankCounts gatherRankCounts(const World& world, comm::Communicator& comm) {
-    const std::uint64_t counts[2] = {ownedIndices(world).size(), world.particles().size()};
+    const comm::Traffic traffic = comm.traffic();
+    const std::uint64_t counts[4] = {ownedIndices(world).size(), world.particles().size(), traffic.bytes, traffic.messages};
     const std::vector<comm::Bytes> blocks = comm.gatherToRoot(std::as_bytes(std::span(counts)));
     RankCounts report;
     for (const comm::Bytes& b : blocks) {
-        std::uint64_t c[2] = {0, 0};
+        std::uint64_t c[4] = {0, 0, 0, 0};
         std::memcpy(c, b.data(), std::min(sizeof c, b.size()));
         report.owned.push_back(c[0]);
         report.ghosts.push_back(c[1] - c[0]);
+        report.bytesSent.push_back(c[2]);
+        report.messagesSent.push_back(c[3]);
     }
+    const WorldDistribution* d = world.impl_->distribution.get();
+    report.rebalances = d ? d->recuts : 0;
     return report;
 }
 

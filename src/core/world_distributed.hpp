@@ -8,8 +8,9 @@
 /// neighbour grid at the domain's corner, so that every particle meets its neighbours in the
 /// same order, and sums the same, on any number of ranks; the solver refreshes ghost fields
 /// through StepContext::sharing. What is split so far: wcsph, dfsph and pcisph with walls, fixed
-/// obstacles and their loads (exact sums over ranks); anything else is refused when the World is
-/// distributed.
+/// obstacles and their loads (exact sums over ranks), gauges and probes (sampleOverRanks) and
+/// checkpoints (World::saveState keeps the owned particles); anything else is refused when the
+/// World is distributed.
 
 #include <span>
 
@@ -22,9 +23,21 @@
 
 namespace tide {
 
+/// When the boxes are cut again as the water moves. Re-cutting changes which rank steps a
+/// particle, never the result: a rebalanced run equals one that never rebalanced, bit for bit.
+struct DistributionOptions {
+    /// Re-cut every this many steps whatever the load (0: only when the load drifts).
+    int rebalanceEvery = 0;
+    /// Re-cut when the busiest rank owns this many times the mean number of particles, and
+    /// more than 1.05 times the imbalance the last cut left (boxes of whole cells cannot
+    /// always do better; this stops re-cutting to no gain).
+    double rebalanceAbove = 1.2;
+};
+
 /// Splits `world` among the ranks of `comm` (collective; every rank passes a World built from
-/// the same definitions). Throws std::invalid_argument naming what cannot be split yet.
-void distributeWorld(World& world, comm::Communicator& comm);
+/// the same definitions). Throws std::invalid_argument naming what cannot be split yet or a
+/// bad option.
+void distributeWorld(World& world, comm::Communicator& comm, const DistributionOptions& options = {});
 
 /// The particles every rank owns, gathered on rank 0 and ordered by id (the other ranks get
 /// an empty store). Collective.
@@ -48,10 +61,12 @@ struct FieldSamples {
 FieldSamples sampleOverRanks(const World& world, comm::Communicator& comm, std::span<const glm::vec2> gauges,
                              std::span<const glm::vec3> probes);
 
-/// Particles each rank owns and the ghosts it holds now, on rank 0 (the others get empty
-/// lists). Collective.
+/// Particles each rank owns and the ghosts it holds now, and the bytes and messages it has
+/// sent in exchanges so far, on rank 0 (the others get empty lists); how often the boxes
+/// were cut again. Collective.
 struct RankCounts {
-    std::vector<std::uint64_t> owned, ghosts;
+    std::vector<std::uint64_t> owned, ghosts, bytesSent, messagesSent;
+    std::uint64_t rebalances = 0;  ///< re-cuts that moved a box
 };
 RankCounts gatherRankCounts(const World& world, comm::Communicator& comm);
 

@@ -71,6 +71,12 @@ double sumOverRanks(const World::Impl& w, const comm::ExactSum& local);
 std::uint64_t ownedOverRanks(const World::Impl& w);
 std::uint64_t countOverRanks(const World::Impl& w, std::uint64_t local);
 double maxOverRanks(const World::Impl& w, double local);
+/// A split run's particles from `first` on (just emitted, the same on every rank): keeps
+/// those in this rank's box, as owned particles.
+void keepOwnedFrom(World::Impl& w, std::uint32_t first);
+/// World::surfaceHeight at (x, z) over every rank's particles, the same on every rank
+/// (collective): a paddle's absorber in a split run.
+float surfaceHeightOverRanks(const World::Impl& w, float x, float z);
 /// A split run's ghost flags (1: not this rank's), for bookings that must skip them.
 const std::vector<std::uint8_t>* ghostFlags(const World::Impl& w);
 /// A split run's contact impulses summed over the ranks (ContactImpulses::reduce).
@@ -508,7 +514,8 @@ struct World::Impl {
             WaveMaker& maker = paddle.maker;
             const float x = maker.def().x + static_cast<float>(maker.motion(time).x + paddle.absorber->gaugeDistance());
             const float z = 0.5f * (wallsMin().z + wallsMax().z);
-            const float y = freeSurfaceHeight(particles, materials, periodic, kernel(), x, z);
+            const float y = distribution ? surfaceHeightOverRanks(*this, x, z)
+                                         : freeSurfaceHeight(particles, materials, periodic, kernel(), x, z);
             const double offset = maker.correction().at(time);
             const double still = static_cast<double>(def.domainMin.y) + maker.def().depth;
             const double velocity = paddle.absorber->correctionVelocity(time, y, still, offset, maker.correction().velocity);
@@ -623,15 +630,22 @@ struct World::Impl {
     }
 
     void emit(double t0, double dt) {
+        if (emitters.empty()) return;
+        // A split run: every rank emits every layer (the same ids on each) and keeps what falls
+        // in its box; the capacity counts every rank's particles.
+        const std::uint32_t before = particles.size();
+        std::uint64_t held = distribution ? ownedOverRanks(*this) : particles.size();
         for (EmitterState& emitter : emitters) {
             const double dropped = emitter.advance(t0, dt, def.particleSpacing, [&](const Lattice& layer) {
                 const std::uint64_t count = countLattice(layer, Fill::EmitterLayer);
-                if (particles.size() + count > def.capacity) return false;
+                if (held + count > def.capacity) return false;
                 appendLattice(layer, Fill::EmitterLayer, count, emitter.def.velocity, emitter.def.material, emitter.def.concentration);
+                held += count;
                 return true;
             });
             stats.emitterCapacityHits += dropped < 1.8e19 ? static_cast<std::uint64_t>(dropped) : ~std::uint64_t{0};
         }
+        if (distribution && particles.size() > before) keepOwnedFrom(*this, before);
     }
 
     /// The step's statistics; returns the divergence the same pass over the particles found.
