@@ -2,7 +2,7 @@
 // large for this machine to step: the near field of scenes/ocean_pile.json scaled to 10^8
 // particles (by default), split among 16-1024 ranks. Owned and ghost particles, neighbour
 // ranks and messages are exact counts of the lattice the scene would fill; the bytes follow
-// from stated assumptions (--ghost-bytes, --field-exchanges). docs/performance.md § Past one
+// from what a ghost costs a step as measured on this machine (--bytes-per-ghost). docs/performance.md § Past one
 // machine quotes its output.
 #include <CLI/CLI.hpp>
 
@@ -32,7 +32,12 @@ std::vector<std::uint64_t> pointsPerCell(std::int64_t n, double s, double h, int
 int main(int argc, char** argv) {
     CLI::App app{"Partition an ocean near field of N particles among ranks (no simulation)"};
     double particles = 1e8, lengthX = 2.4, lengthZ = 2.4, height = 0.6, depth = 0.32, supportRatio = 2.0;
-    double ghostBytes = 48, fieldExchanges = 10;
+    // What a ghost costs a step, as measured (bench/mpi_scaling.sh: the 200k dam break with
+    // dfsph on 2 ranks sends 5.8 MB a step for 13.7 k ghosts: the record, migration and the
+    // pressure solve's refreshes).
+    double bytesPerGhost = 425;
+    // As the split run (src/core/world_distributed.cpp): walls' pressure reaches 2 supports.
+    constexpr int kGhostCells = 2;
     std::vector<int> rankCounts{16, 32, 64, 128, 256, 512, 1024};
     app.add_option("--particles", particles, "water particles (the spacing follows)")->check(CLI::PositiveNumber);
     app.add_option("--length-x", lengthX, "near field length in x, m (ocean_pile: 2.4)")->check(CLI::PositiveNumber);
@@ -41,9 +46,8 @@ int main(int argc, char** argv) {
     app.add_option("--depth", depth, "still-water depth, m (ocean_pile: 0.32)")->check(CLI::PositiveNumber);
     app.add_option("--support-ratio", supportRatio, "kernel support / spacing = cell width / spacing")
         ->check(CLI::PositiveNumber);
-    app.add_option("--ghost-bytes", ghostBytes, "assumed bytes of a full ghost record (x, v, m, rho, p, id, material)");
-    app.add_option("--field-exchanges", fieldExchanges,
-                   "assumed one-float refreshes of the ghosts per step (pressure-solve iterations)");
+    app.add_option("--bytes-per-ghost", bytesPerGhost, "bytes a ghost costs a step (default: measured with dfsph)")
+        ->check(CLI::PositiveNumber);
     app.add_option("--ranks", rankCounts, "rank counts")->check(CLI::PositiveNumber);
     CLI11_PARSE(app, argc, argv);
     if (depth > height) {
@@ -71,13 +75,13 @@ int main(int argc, char** argv) {
     std::printf("near field %.2f x %.2f m, depth %.2f m: spacing %.3g mm, %llu particles, %d x %d x %d cells\n",
                 lengthX, lengthZ, depth, spacing * 1e3, static_cast<unsigned long long>(total), grid.cells[0],
                 grid.cells[1], grid.cells[2]);
-    std::printf("assumed: %g B per ghost record + %g float refreshes per step\n\n", ghostBytes, fieldExchanges);
+    std::printf("ghost rings %d cells deep; %g B a ghost a step (measured on 200k particles)\n\n", kGhostCells, bytesPerGhost);
     std::printf("%6s %12s %10s %12s %12s %10s %10s %12s %14s %8s\n", "ranks", "owned/rank", "imbalance",
                 "ghosts/owned", "max ghosts", "nbrs mean", "nbrs max", "msgs/exch", "MB/step max", "time s");
     for (const int ranks : rankCounts) {
         const auto start = std::chrono::steady_clock::now();
         const auto boxes = tide::comm::partitionRcb(grid, cost, ranks);
-        const auto loads = tide::comm::rankLoads(grid, cost, boxes);
+        const auto loads = tide::comm::rankLoads(grid, cost, boxes, kGhostCells);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         std::uint64_t ghosts = 0, maxGhosts = 0, messages = 0;
         std::size_t maxNeighbours = 0;
@@ -87,7 +91,7 @@ int main(int argc, char** argv) {
             messages += l.neighbours.size();
             maxNeighbours = std::max(maxNeighbours, l.neighbours.size());
         }
-        const double bytesPerStep = static_cast<double>(maxGhosts) * (ghostBytes + 4.0 * fieldExchanges);
+        const double bytesPerStep = static_cast<double>(maxGhosts) * bytesPerGhost;
         std::printf("%6d %12.0f %10.4f %12.4f %12llu %10.2f %10zu %12llu %14.2f %8.1f\n", ranks,
                     static_cast<double>(total) / ranks, tide::comm::loadImbalance(loads),
                     static_cast<double>(ghosts) / static_cast<double>(total),

@@ -7,10 +7,12 @@
 /// owners, takes new ghosts two cells deep, orders everything by (cell, id) and anchors the
 /// neighbour grid at the domain's corner, so that every particle meets its neighbours in the
 /// same order, and sums the same, on any number of ranks; the solver refreshes ghost fields
-/// through StepContext::sharing. What is split so far: wcsph, dfsph and pcisph with walls, fixed
-/// obstacles and their loads (exact sums over ranks), gauges and probes (sampleOverRanks) and
-/// checkpoints (World::saveState keeps the owned particles); anything else is refused when the
-/// World is distributed.
+/// through StepContext::sharing. Walls, obstacles, paddles and bodies are boundary particles
+/// every rank holds and moves alike; their loads are exact sums over the ranks, so bodies move
+/// the same everywhere. Emitters emit on every rank and each keeps what falls in its box.
+/// Gauges and probes: sampleOverRanks; checkpoints: World::saveState keeps the owned
+/// particles. Refused when the World is distributed: solvers other than wcsph, dfsph and
+/// pcisph, oceans and dye diffusion.
 
 #include <span>
 

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Wave tanks and floating bodies split among processes equal one process (issue 47,
-# acceptance 4): the shipped scenes, coarser and shorter, on 1, 2 and 3 ranks.
+# Wave tanks, floating bodies and the other scenes' features split among processes equal one
+# process (issue 47, acceptance 4): the shipped scenes, coarser and shorter, on 1, 2 and 3 ranks.
 #  - floating_box_waves: a periodic 3D slab, a piston paddle, a beach (plane) and a floating
 #    box free in x, y and roll (wave maker, periodic axis, body, fixed obstacle);
 #  - wave_tank_2d with the paddle's active absorption on (its gauge read over every rank);
 #  - sinking_cylinder_2d: a 2D body, periodic in x, after settling;
-#  - dam_break with a jet (an emitter) added.
+#  - dam_break with a jet (an emitter) added;
+#  - droplet (surface tension), many_materials (four fluids), stirred_tank (a moving obstacle).
 # Frames (CSV), gauges, forces and bodies must be byte-identical, and on 3 ranks with the boxes
 # re-cut every 4 steps too.
 #   run_split_scenes.sh TIDE MPIEXEC SCENES_DIR
@@ -40,7 +41,15 @@ def jet(s):  # a jet into a pool, across the ranks' boxes, from the dam break wi
     s["solver"] = {"method": "wcsph"}
     s["emitters"] = [{"min": [0.05, 0.45, 0.2], "max": [0.05, 0.54, 0.29], "velocity": [2.0, 0, 0],
                       "material": "water", "start": 0}]
+def short(spacing, end):
+    def change(s):
+        s["particle_spacing"] = spacing
+        s["end_time"] = end
+    return change
 derive("dam_break", jet)
+derive("droplet", short(0.015, 0.1))          # surface tension (Akinci 2013)
+derive("many_materials", short(0.03, 0.15))   # four fluids, 25:1 in density
+derive("stirred_tank", short(0.025, 0.1))     # a moving obstacle
 derive("floating_box_waves", box)
 derive("wave_tank_2d", tank)
 derive("sinking_cylinder_2d", cylinder)
@@ -50,7 +59,7 @@ run() {  # scene ranks folder [flags]
     shift 3
     "$mpiexec" --oversubscribe -np "$ranks" "$tide" run "$work/$scene.json" --out "$out" --threads 1 --quiet "$@"
 }
-for scene in floating_box_waves wave_tank_2d sinking_cylinder_2d dam_break; do
+for scene in floating_box_waves wave_tank_2d sinking_cylinder_2d dam_break droplet many_materials stirred_tank; do
     run "$scene" 1 "$work/$scene-1"
     ls "$work/$scene-1"/frame_*.csv > /dev/null || fail "$scene wrote no frames"
     for ranks in 2 3; do
