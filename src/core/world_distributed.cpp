@@ -53,6 +53,20 @@ struct WorldDistribution final : StepSharing {
     }
 };
 
+namespace {
+
+/// The ranks' boxes for these per-cell particle counts. A scene that starts empty (its water
+/// comes from emitters) is cut by cells, every cell counting one, and re-cut by its water as it
+/// arrives. Throws, naming the counts, where the water fills fewer cells than there are ranks or
+/// the grid has fewer cells than ranks.
+std::vector<comm::CellBox> cutBoxes(const comm::CellGrid& grid, std::vector<std::uint64_t> cost, int ranks) {
+    if (std::all_of(cost.begin(), cost.end(), [](std::uint64_t c) { return c == 0; }))
+        std::fill(cost.begin(), cost.end(), std::uint64_t{1});
+    return comm::partitionRcb(grid, cost, ranks);
+}
+
+}  // namespace
+
 bool WorldDistribution::dueForRecut(std::uint32_t owned) {
     ++stepsSinceCut;
     if (comm->size() == 1) return false;
@@ -90,7 +104,7 @@ void WorldDistribution::recut(const ParticleStore& owned) {
             for (std::size_t k = 0; k + 1 < pairs.size(); k += 2) cost[static_cast<std::size_t>(pairs[k])] += static_cast<std::uint64_t>(pairs[k + 1]);
         }
         try {
-            const std::vector<comm::CellBox> boxes = comm::partitionRcb(grid, cost, comm->size());
+            const std::vector<comm::CellBox> boxes = cutBoxes(grid, cost, comm->size());
             const double imbalance = comm::loadImbalance(comm::rankLoads(grid, cost, boxes, split->ghostCells()));
             answer.resize(sizeof imbalance + boxes.size() * sizeof(comm::CellBox));
             std::memcpy(answer.data(), &imbalance, sizeof imbalance);
@@ -134,10 +148,10 @@ void distributeWorld(World& world, comm::Communicator& comm, const DistributionO
         throw std::invalid_argument("rebalance above: a load imbalance (max/mean) must be at least 1, got " +
                                     std::to_string(options.rebalanceAbove));
     const std::string& method = w.def.solver.method;
-    if (method != "wcsph" && method != "dfsph" && method != "pcisph")
-        refuse("solver.method \"" + method + "\" (wcsph, dfsph and pcisph can)");
+    // The solvers that refresh their ghosts (StepContext::refreshGhosts) where a neighbour reads.
+    if (method != "wcsph" && method != "dfsph" && method != "pcisph" && method != "classic" && method != "pbf")
+        refuse("solver.method \"" + method + "\" (classic, wcsph, pcisph, dfsph and pbf can)");
     if (w.zones) refuse("an ocean");
-    if (w.pairTables.anyDiffusion()) refuse("dye diffusion");
 
     auto d = std::make_shared<WorldDistribution>();
     d->comm = &comm;
@@ -161,7 +175,7 @@ void distributeWorld(World& world, comm::Communicator& comm, const DistributionO
     comm::DomainSplit probe(grid, w.def.domainMin, cellSize, {comm::CellBox{{0, 0, 0}, grid.cells}}, kGhostCells);
     std::vector<std::uint64_t> cost(static_cast<std::size_t>(grid.cellCount()), 0);
     for (const glm::vec3& x : w.particles.position) ++cost[static_cast<std::size_t>(probe.cellIndexOf(x))];
-    d->split.emplace(grid, w.def.domainMin, cellSize, comm::partitionRcb(grid, cost, comm.size()), kGhostCells);
+    d->split.emplace(grid, w.def.domainMin, cellSize, cutBoxes(grid, cost, comm.size()), kGhostCells);
     d->imbalanceAfterCut = comm::loadImbalance(comm::rankLoads(grid, cost, d->split->boxes(), kGhostCells));
     std::vector<std::uint8_t> keep(w.particles.size());
     for (std::uint32_t i = 0; i < w.particles.size(); ++i)

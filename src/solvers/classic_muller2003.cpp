@@ -1,6 +1,7 @@
 #include "solvers/classic_muller2003.hpp"
 
 #include <algorithm>
+#include <span>
 
 #include <glm/geometric.hpp>
 
@@ -104,12 +105,17 @@ void ClassicMuller2003::computeAccelerations(StepContext& ctx) const {
 double ClassicMuller2003::step(StepContext& ctx) {
     ParticleStore& p = ctx.particles;
     computeDensityAndPressure(ctx);
+    // A split run: the forces read neighbours' densities and pressures, complete only on their owners.
+    ctx.refreshGhosts(std::span<float>(p.density));
+    ctx.refreshGhosts(std::span<float>(p.pressure));
     ctx.lap(Phase::Density);
     computeAccelerations(ctx);  // pressure and viscosity in one pass
     // Surface tension and adhesion (Akinci et al. 2013), when set: their force limit is in
     // stableTimeStep's criterion on the total acceleration.
     addSurfaceTension(ctx, p.acceleration);
     ctx.lap(Phase::PressureSolve);
+    // Ghosts then move as their owners do, so XSPH reads the neighbours' true new velocities.
+    ctx.refreshGhosts(std::span<glm::vec3>(p.acceleration));
 
     const auto n = p.size();
     const float maxSpeed2 = std::max(parallelMax(n, ctx.threads, [&](std::uint32_t i) {
@@ -118,8 +124,8 @@ double ClassicMuller2003::step(StepContext& ctx) {
     const float maxAccel2 = parallelMax(n, ctx.threads, [&](std::uint32_t i) {
         return glm::dot(p.acceleration[i], p.acceleration[i]);
     }, 0.0f);
-    const double dt = stableTimeStep(ctx.solver, ctx.particleSpacing, ctx.soundSpeed, std::sqrt(maxSpeed2),
-                                     std::sqrt(maxAccel2), maxKinematicViscosity(ctx), ctx.maxDt);
+    const double dt = stableTimeStep(ctx.solver, ctx.particleSpacing, ctx.soundSpeed, ctx.maxOverRanks(std::sqrt(maxSpeed2)),
+                                     ctx.maxOverRanks(std::sqrt(maxAccel2)), maxKinematicViscosity(ctx), ctx.maxDt);
 
     const auto dtf = static_cast<float>(dt);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) { p.velocity[i] += dtf * p.acceleration[i]; });

@@ -1,6 +1,7 @@
 #include "solvers/pbf_macklin2013.hpp"
 
 #include <algorithm>
+#include <span>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -104,6 +105,28 @@ void PbfMacklin2013::solveLambda(StepContext& ctx, float epsilon, bool lastItera
             if (lastIteration) p.density[i] = ctx.materials[p.material[i]].restDensity * (c + 1.0f);
             correctionRows_[i] = glm::vec4(xi, lambda_[i] * vi);
         }
+    });
+}
+
+void PbfMacklin2013::refreshGhostLambdas(StepContext& ctx) {
+    if (!ctx.sharing) return;
+    // A ghost's λ misses neighbours its owner has: the correction pass reads its owner's.
+    ctx.refreshGhosts(std::span<float>(lambda_));
+    const ParticleStore& p = ctx.particles;
+    const std::span<const std::uint8_t> ghosts = ctx.sharing->ghosts();
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+        if (ghosts[i]) correctionRows_[i] = glm::vec4(p.position[i], lambda_[i] * volume_[i]);
+    });
+}
+
+void PbfMacklin2013::refreshGhostPositions(StepContext& ctx) {
+    if (!ctx.sharing) return;
+    // The next λ pass reads the neighbours' corrected positions.
+    ParticleStore& p = ctx.particles;
+    ctx.refreshGhosts(std::span<glm::vec3>(p.position));
+    const std::span<const std::uint8_t> ghosts = ctx.sharing->ghosts();
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+        if (ghosts[i]) rows_[i] = glm::vec4(p.position[i], volume_[i]);
     });
 }
 
@@ -249,7 +272,9 @@ double PbfMacklin2013::step(StepContext& ctx) {
     lastDt_ = dtStep;
     for (int it = 0; it < iterations; ++it) {
         solveLambda(ctx, epsilon, it == iterations - 1);
+        refreshGhostLambdas(ctx);
         applyCorrection(ctx, share);
+        refreshGhostPositions(ctx);
     }
     ctx.lap(Phase::PressureSolve);
     // Lines 21–24: velocities from the positions, then vorticity confinement and XSPH.
@@ -262,6 +287,10 @@ double PbfMacklin2013::step(StepContext& ctx) {
         // p = −ρ0_ref λ/Δt²: the SPH pressure whose acceleration moves i by Δx (the equivalent, for output).
         p.pressure[i] = toPressure * lambda_[i];
     });
+    if (ctx.sharing) {  // vorticity and XSPH read the neighbours' velocities and densities
+        ctx.refreshGhosts(std::span<glm::vec3>(p.velocity));
+        ctx.refreshGhosts(std::span<float>(p.density));
+    }
     if (ctx.solver.vorticity > 0.0f) confineVorticity(ctx, dt, ctx.solver.vorticity);
     // XSPH in SIMD lanes over rows (x_j, m_j), with rows_ (free now) for (v_j, ρ_j)
     resizeScratch(massRows_, n);

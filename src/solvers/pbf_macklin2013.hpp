@@ -64,6 +64,9 @@ private:
     /// Δx_i (eq. 14) from the λ and pair factors of solveLambda, `share` of it added to the
     /// positions (and to moved_), which it packs for the next λ pass.
     void applyCorrection(StepContext& ctx, float share);
+    /// A split run's ghosts: their owners' λ (and correction rows), then their owners' corrected positions.
+    void refreshGhostLambdas(StepContext& ctx);
+    void refreshGhostPositions(StepContext& ctx);
     /// ε of eq. 11: a fraction of the denominator of a particle inside the rest lattice.
     [[nodiscard]] float relaxation(const StepContext& ctx);
     /// Vorticity confinement (eq. 15–16): v_i += Δt ε (N × ω_i).

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A split run's checkpoints resume on another number of ranks, bit for bit (issue 47,
-# acceptance 2): a dam break past a fixed block with a gauge and a probe (~3,000 particles at
-# 1 cm, 5 frames 0.025 s apart, ~10-25 steps each) run whole on 1 rank; stopped after frame 2 on
+# acceptance 2): a dam break past a fixed block with a gauge and a probe (~1,500 particles at
+# 1.25 cm, 5 frames 0.025 s apart, ~10-25 steps each) run whole on 1 rank; stopped after frame 2 on
 # 1 rank and resumed on 3; stopped on 4 and resumed on 2. Frames, forces.csv, gauges.csv and
 # probes.csv must be byte-identical to the whole run's; the gauges and probes also to 3 ranks'.
 #   run_split_resume.sh TIDE MPIEXEC SOLVER
@@ -13,7 +13,7 @@ cat > "$work/scene.json" <<JSON
 {
   "name": "split dam break, resumed",
   "domain": {"min": [0, 0, 0], "max": [0.6, 0.4, 0.08]},
-  "particle_spacing": 0.01,
+  "particle_spacing": 0.0125,
   "end_time": 0.1,
   "solver": {"method": "$solver"},
   "materials": [{"name": "water", "density": 1000, "viscosity": 0.001}],
