@@ -341,8 +341,8 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
     }
     if (split) failure = static_cast<int>(comm->max(failure));
     if (failure != kExitOk) return failure;
-    // Every particle, on every rank (a split run's own particles add up to it; emitters add
-    // to it, so it is counted again after each step).
+    // Every particle, on every rank (a split run's own particles add up to it; emitters and
+    // an ocean's zones change it, so it is counted again after each step).
     const auto countParticles = [&]() -> std::uint64_t {
         return split ? static_cast<std::uint64_t>(comm->sum(static_cast<std::int64_t>(ownedIndices(*world).size())))
                      : world->particles().size();
@@ -396,7 +396,7 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
             if (frame > 0) {
                 const double target = frame / scene.output.fps;
                 world->advance(target - world->time(), [&] {
-                    if (split && !scene.emitters.empty()) totalParticles = countParticles();
+                    if (split && (!scene.emitters.empty() || scene.ocean)) totalParticles = countParticles();
                     const std::uint64_t n = split ? totalParticles : world->particles().size();
                     particleSteps += n;
                     sessionSteps += n;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 #include <numeric>
 #include <span>
 
@@ -151,7 +152,6 @@ void distributeWorld(World& world, comm::Communicator& comm, const DistributionO
     // The solvers that refresh their ghosts (StepContext::refreshGhosts) where a neighbour reads.
     if (method != "wcsph" && method != "dfsph" && method != "pcisph" && method != "classic" && method != "pbf")
         refuse("solver.method \"" + method + "\" (classic, wcsph, pcisph, dfsph and pbf can)");
-    if (w.zones) refuse("an ocean");
 
     auto d = std::make_shared<WorldDistribution>();
     d->comm = &comm;
@@ -208,6 +208,69 @@ void keepOwnedFrom(World::Impl& w, std::uint32_t first) {
         keep[i] = d.split->ownerOf(d.split->cellOf(w.particles.position[i])) == self ? 1 : 0;
     w.particles.retain(keep);  // the particles before `first` (and the halo's indices) stay
     d.ghost.resize(w.particles.size(), 0);
+}
+
+void coupleOverRanks(World::Impl& w, double end) {
+    WorldDistribution& d = *w.distribution;
+    comm::Communicator& comm = *d.comm;
+    const int self = comm.rank();
+    // Outflow: particles and their ghost flags retained together (the step's statistics and
+    // emitters read the flags by index); only owned particles count as removed.
+    std::vector<std::uint8_t> keep(w.particles.size(), 1);
+    std::int64_t removed = 0;
+    for (std::uint32_t i = 0; i < w.particles.size(); ++i)
+        if (w.zones->outside(w.particles.position[i])) {
+            keep[i] = 0;
+            removed += d.ghost[i] ? 0 : 1;
+        }
+    if (std::find(keep.begin(), keep.end(), std::uint8_t{0}) != keep.end()) {
+        w.particles.retain(keep);
+        std::vector<std::uint8_t> ghost;
+        ghost.reserve(w.particles.size());
+        for (std::size_t i = 0; i < keep.size(); ++i)
+            if (keep[i]) ghost.push_back(d.ghost[i]);
+        d.ghost = std::move(ghost);
+    }
+    w.stats.oceanRemoved += static_cast<std::uint64_t>(comm.sum(removed));
+    // Inflow: this rank's cells only, judged against its particles and ghosts.
+    const std::uint32_t first = w.particles.size();
+    const std::uint32_t base = w.particles.nextId();
+    std::vector<std::uint64_t> visits;
+    w.zones->refill(
+        w.particles, end, w.massOf(w.oceanMaterial), w.oceanMaterial, w.materials[w.oceanMaterial].restDensity,
+        std::numeric_limits<std::uint32_t>::max(),
+        [&](const glm::vec3& x) { return d.split->ownerOf(d.split->cellOf(x)) == self && w.roomFor(x, World::Impl::Fill::Block); },
+        w.threads, &visits);
+    d.ghost.resize(w.particles.size(), 0);
+    // Every rank's added points in visiting order: the ids one process would give them.
+    const std::vector<comm::Bytes> blocks = comm.gatherToRoot(std::as_bytes(std::span(visits)));
+    comm::Bytes all;
+    if (self == 0)
+        for (const comm::Bytes& b : blocks) all.insert(all.end(), b.begin(), b.end());
+    all = comm.broadcastFromRoot(std::move(all));
+    std::vector<std::uint64_t> order(all.size() / sizeof(std::uint64_t));
+    std::memcpy(order.data(), all.data(), order.size() * sizeof(std::uint64_t));
+    std::sort(order.begin(), order.end());
+    // At most the capacity, the first in that order kept (as one process stops adding).
+    const std::uint64_t held = ownedOverRanks(w) - order.size();  // every rank's, before this inflow
+    const std::uint64_t room = w.def.capacity > held ? w.def.capacity - held : 0;
+    std::vector<std::uint8_t> kept(w.particles.size(), 1);
+    bool dropped = false;
+    for (std::size_t k = 0; k < visits.size(); ++k) {
+        const auto at = static_cast<std::uint64_t>(std::lower_bound(order.begin(), order.end(), visits[k]) - order.begin());
+        w.particles.id[first + k] = base + static_cast<std::uint32_t>(at);
+        if (at >= room) {
+            kept[first + k] = 0;
+            dropped = true;
+        }
+    }
+    const std::uint64_t added = std::min<std::uint64_t>(order.size(), room);
+    if (dropped) {
+        w.particles.retain(kept);
+        d.ghost.resize(w.particles.size(), 0);
+    }
+    w.particles.setNextId(base + static_cast<std::uint32_t>(added));
+    w.stats.oceanAdded += added;
 }
 
 const StepSharing* stepSharing(const World::Impl& w) { return w.distribution.get(); }
@@ -328,8 +391,13 @@ FieldSamples sampleOverRanks(const World& world, comm::Communicator& comm, std::
     const ParticleStore nearby = gatherNear(w, comm, near);
     FieldSamples samples;
     if (comm.rank() != 0) return samples;
-    for (const glm::vec2& g : gauges)
-        samples.heights.push_back(freeSurfaceHeight(nearby, w.materials, w.periodic, w.kernel(), g.x, g.y));
+    for (const glm::vec2& g : gauges) {
+        // As World::surfaceHeight: outside an ocean's near field, the far field's surface.
+        const bool farField = w.zones && (g.x < w.def.domainMin.x || g.x > w.def.domainMax.x ||
+                                          g.y < w.def.domainMin.z || g.y > w.def.domainMax.z);
+        samples.heights.push_back(farField ? static_cast<float>(world.oceanSurfaceHeight(g.x, g.y))
+                                           : freeSurfaceHeight(nearby, w.materials, w.periodic, w.kernel(), g.x, g.y));
+    }
     for (const glm::vec3& p : probes) {
         const FieldSample f = sampleField(nearby, w.materials, w.periodic, w.kernel(), p);
         samples.probes.push_back({f.density, f.pressure, f.velocity});

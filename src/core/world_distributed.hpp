@@ -11,8 +11,8 @@
 /// every rank holds and moves alike; their loads are exact sums over the ranks, so bodies move
 /// the same everywhere. Emitters emit on every rank and each keeps what falls in its box.
 /// Gauges and probes: sampleOverRanks; checkpoints: World::saveState keeps the owned
-/// particles. Refused when the World is distributed: solvers other than wcsph, dfsph and
-/// pcisph, oceans and dye diffusion.
+/// particles. An ocean's inflow: each rank fills its own cells, ids in the one-process order
+/// (coupleOverRanks).
 
 #include <span>
 

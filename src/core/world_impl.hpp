@@ -74,6 +74,10 @@ double maxOverRanks(const World::Impl& w, double local);
 /// A split run's particles from `first` on (just emitted, the same on every rank): keeps
 /// those in this rank's box, as owned particles.
 void keepOwnedFrom(World::Impl& w, std::uint32_t first);
+/// An ocean's outflow and inflow in a split run (the rest of Impl::couple): each rank removes
+/// its particles past the open faces and fills the lattice points of its own cells; the added
+/// particles take ids in the one order every rank count shares. Collective.
+void coupleOverRanks(World::Impl& w, double end);
 /// World::surfaceHeight at (x, z) over every rank's particles, the same on every rank
 /// (collective): a paddle's absorber in a split run.
 float surfaceHeightOverRanks(const World::Impl& w, float x, float z);
@@ -174,6 +178,10 @@ struct World::Impl {
     /// Relaxation, outflow and inflow of the ocean's zones over a step of dt ending at `end`.
     void couple(double end, double dt) {
         zones->relax(particles, end, dt, threads);
+        if (distribution) {
+            coupleOverRanks(*this, end);
+            return;
+        }
         stats.oceanRemoved += zones->removeOutflow(particles);
         stats.oceanAdded += zones->refill(particles, end, massOf(oceanMaterial), oceanMaterial,
                                           materials[oceanMaterial].restDensity, def.capacity,

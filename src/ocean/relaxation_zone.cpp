@@ -203,7 +203,8 @@ std::uint32_t RelaxationZones::removeOutflow(ParticleStore& particles) {
 
 std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float mass, MaterialIndex material,
                                       float restDensity, std::uint32_t capacity,
-                                      const std::function<bool(const glm::vec3&)>& room, int threads) {
+                                      const std::function<bool(const glm::vec3&)>& room, int threads,
+                                      std::vector<std::uint64_t>* visits) {
     const double r = ramp(t);
     const SeaLattice* field = r == 0.0 ? nullptr : &lattice(t, threads);
     const double s = near_.spacing;
@@ -251,6 +252,7 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
                                      static_cast<long>(std::floor((hi - o) / s - 0.5 + 1e-6))};
     };
     std::uint32_t added = 0;
+    std::uint64_t visited = 0;  // lattice points under the surface so far, on every rank alike
     for (const OceanSide side : sides_) {
         const int axis = axisOf(side), other = 2 - axis;
         const double face = maxSide(side) ? near_.max[axis] : near_.min[axis];
@@ -267,12 +269,14 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
                     x.y = near_.latticeOrigin.y + (static_cast<double>(k) + 0.5) * s;
                     // A cell wholly under the far field's surface.
                     if (x.y + 0.5 * s > surface) break;
+                    const std::uint64_t visit = visited++;
                     const glm::vec3 p(x);
                     if (outside(p) || occupied(x) || !room(p)) continue;
                     if (particles.size() >= capacity) return added;
                     particles.append(p, field ? glm::vec3(velocityFrom(*field, p, r)) : glm::vec3(0.0f), mass, material,
                                      restDensity);
                     addedCells[cellOf(x)].push_back(p);
+                    if (visits) visits->push_back(visit);
                     ++added;
                     ++totals_.added;
                 }

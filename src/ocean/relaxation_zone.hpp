@@ -119,9 +119,13 @@ public:
     /// Adds a particle (far-field velocity, given mass and rest density) at each lattice point
     /// of the inflow strips that lies under the far field's surface, has room (`room`: the
     /// solids) and has no particle within 0.9 spacing; at most `capacity` particles in all.
-    /// Returns how many.
+    /// Returns how many. Two lattice points are a spacing apart, so one added never blocks
+    /// another: a split run's rank decides the points in its own cells (`room` says which)
+    /// from its particles and ghosts, and `visits` (when given) receives each added point's
+    /// number in the visiting order, which is the same on every rank (the ids' global order).
     std::uint32_t refill(ParticleStore& particles, double t, float mass, MaterialIndex material, float restDensity,
-                         std::uint32_t capacity, const std::function<bool(const glm::vec3&)>& room, int threads = 1);
+                         std::uint32_t capacity, const std::function<bool(const glm::vec3&)>& room, int threads = 1,
+                         std::vector<std::uint64_t>* visits = nullptr);
     [[nodiscard]] const ZoneTotals& totals() const { return totals_; }
 
 private:

@@ -48,6 +48,13 @@ def commands(markdown):
 def cheapened(argv, cwd):
     """The command as run in `cwd`, or (None, reason) when it is skipped."""
     prog = argv[0]
+    if prog in ("mpirun", "mpiexec"):
+        # Under an MPI launcher: as many ranks as asked, on however few cores this machine has.
+        at = next((i for i, a in enumerate(argv) if a.endswith("/tide")), None)
+        if at is None:
+            return None, "an MPI program other than tide"
+        inner, reason = cheapened(argv[at:], cwd)
+        return ([prog, "--oversubscribe"] + list(argv[1:at]) + inner, None) if inner else (None, reason)
     if prog in ("make", "cmake"):
         return None, "set-up/build step (covered by make test itself and the install_consumer test)"
     if prog.endswith("/tide") and len(argv) > 1 and argv[1] in ("run", "render") and "--help" not in argv:
@@ -69,6 +76,8 @@ def cheapened(argv, cwd):
             if a == "--from":
                 argv[i + 1] = "0"
         return argv, None
+    if prog in ("cmp", "diff"):  # comparing what earlier commands wrote
+        return list(argv), None
     if not os.path.exists(os.path.join(cwd, prog)):
         return None, "a program an earlier skipped step builds"
     return list(argv), None
@@ -90,7 +99,8 @@ def main():
         os.symlink(os.path.abspath(args.build), os.path.join(work, "build"))
         for d in ("scenes", "docs"):
             os.symlink(os.path.join(os.path.abspath(args.source), d), os.path.join(work, d))
-        env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE", MPLBACKEND="Agg")
+        env = dict(os.environ, OMP_WAIT_POLICY="PASSIVE", MPLBACKEND="Agg",
+                   OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
         for argv in cmds:
             run, reason = cheapened(argv, work)
             shown = " ".join(shlex.quote(a) for a in argv)
