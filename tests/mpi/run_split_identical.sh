@@ -3,8 +3,8 @@
 # break onto a fixed block (~1,500 particles at 1.25 cm, 0.1 s, 5 frames) with the given solver on
 # 1-4 ranks (dfsph) or 1 and 3 (the others). CSV, PLY and forces.csv must be byte-identical, the
 # VTU pieces must hold every particle once, and --gather's single VTU must be byte-identical too;
-# so must a 3-rank run whose boxes are cut again every 3 steps. A rank count that leaves a rank
-# without water is refused.
+# so must a 3-rank run whose boxes are cut again every 3 steps and (dfsph) 2 ranks of 2 threads.
+# A rank count that leaves a rank without water is refused.
 #   run_split_identical.sh TIDE MPIEXEC SOLVER
 set -euo pipefail
 tide=$1 mpiexec=$2 solver=$3
@@ -72,6 +72,11 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 assert max(abs(float(r["block_fx"])) for r in rows) > 0.01, rows[-1]
 PY
 if [ "$solver" = dfsph ]; then
+    # Threads within the ranks change nothing either: 2 ranks x 2 threads.
+    "$mpiexec" --oversubscribe -np 2 "$tide" run "$work/scene.json" --out "$work/np2t2" --threads 2 --quiet
+    for f in "$work/np1"/frame_*.csv "$work/np1/forces.csv"; do
+        cmp -s "$f" "$work/np2t2/$(basename "$f")" || fail "$(basename "$f") differs between 1 rank x 1 thread and 2 x 2"
+    done
     run 1 "$work/g1" --gather --format vtu
     run 3 "$work/g3" --gather --format vtu
     for f in "$work/g1"/frame_*.vtu; do
