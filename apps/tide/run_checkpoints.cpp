@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "comm/particle_records.hpp"
+#include "core/world_distributed.hpp"
 
 namespace tide::cli {
 
@@ -117,10 +118,7 @@ WorldState joinCheckpointPieces(WorldState main, const std::vector<WorldState>& 
         comm::appendPacked(all, comm::packParticles(piece.particles, every));
         all.setNextId(std::max(all.nextId(), piece.particles.nextId()));
     }
-    std::vector<std::uint32_t> order(all.size());
-    std::iota(order.begin(), order.end(), 0u);
-    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return all.id[a] < all.id[b]; });
-    all.permute(order);
+    sortById(all);
     return main;
 }
 

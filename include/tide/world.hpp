@@ -24,9 +24,10 @@ namespace tide {
 namespace comm {
 class Communicator;
 }
+// A World split among processes (src/core/world_distributed.hpp): its options, gauges and counts.
 struct FieldSamples;
 struct DistributionOptions;
-struct RankCounts;  // a split World's gauges and probes (src/core/world_distributed.hpp)
+struct RankCounts;
 
 /// Why addBlock() added nothing.
 enum class AddStatus {

@@ -321,15 +321,14 @@ std::vector<std::uint32_t> ownedIndicesOf(const World::Impl& w) {
 
 std::vector<std::uint32_t> ownedIndices(const World& world) { return ownedIndicesOf(*world.impl_); }
 
-namespace {
-
-/// `all` ordered by id.
 void sortById(ParticleStore& all) {
     std::vector<std::uint32_t> order(all.size());
     std::iota(order.begin(), order.end(), 0u);
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return all.id[a] < all.id[b]; });
     all.permute(order);
 }
+
+namespace {
 
 /// The owned particles of every rank for which `near` holds, on rank 0 ordered by id (empty
 /// on the others). Collective.

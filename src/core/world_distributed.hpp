@@ -48,6 +48,9 @@ ParticleStore gatherOwnedParticles(const World& world, comm::Communicator& comm)
 /// The indices of the particles this rank owns (all of them in a World not split).
 std::vector<std::uint32_t> ownedIndices(const World& world);
 
+/// `all` ordered by id (the order of a gathered frame and of a joined checkpoint).
+void sortById(ParticleStore& all);
+
 /// This rank's own particles (not its ghosts), ordered by id: its piece of a frame.
 ParticleStore ownedParticles(const World& world);
 
