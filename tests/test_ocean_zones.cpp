@@ -46,10 +46,11 @@ OceanDef regularOcean(double height, double period, double depth, std::vector<Oc
 SolverDef waveSolver() {
     SolverDef solver;
     solver.maxDensityError = 0.003f;
-    solver.xsph = static_cast<float>(envOr("TIDE_ZONE_XSPH", 0.0));
-    solver.momentum = 0.0f;
-    solver.shifting = static_cast<float>(envOr("TIDE_ZONE_SHIFTING", 0.2));
-    solver.differenceForm = 0.5f;
+    // Negative: the automatic wave settings an ocean gets (docs/waves.md § Defaults).
+    solver.xsph = static_cast<float>(envOr("TIDE_ZONE_XSPH", -1.0));
+    solver.momentum = static_cast<float>(envOr("TIDE_ZONE_MOMENTUM", -1.0));
+    solver.shifting = static_cast<float>(envOr("TIDE_ZONE_SHIFTING", -1.0));
+    solver.differenceForm = static_cast<float>(envOr("TIDE_ZONE_DIFFERENCE", -1.0));
     return solver;
 }
 

@@ -235,6 +235,44 @@ std::vector<glm::vec3> sampleObstacle(const ObstacleDef& o, const glm::vec3& ori
     return points;
 }
 
+std::vector<glm::vec3> sampleBoxCentred(const ObstacleDef& box, const glm::vec3& origin, float spacing, float depth,
+                                        const glm::vec3& clipMin, const glm::vec3& clipMax) {
+    glm::ivec3 count(1);
+    glm::bvec3 planar(false), onLattice(false);
+    glm::vec3 first(0.0f);  // the first point's coordinate, or its lattice index where onLattice
+    for (int a = 0; a < 3; ++a) {
+        planar[a] = clipMin[a] == clipMax[a];
+        if (planar[a]) continue;
+        count[a] = std::max(1, static_cast<int>(std::lround((box.max[a] - box.min[a]) / spacing)));
+        first[a] = 0.5f * (box.min[a] + box.max[a]) - 0.5f * static_cast<float>(count[a] - 1) * spacing;
+        const float index = (first[a] - origin[a]) / spacing - 0.5f;
+        if (std::abs(index - std::round(index)) < kOnSurface) {
+            onLattice[a] = true;
+            first[a] = std::round(index);
+        }
+    }
+    std::vector<glm::vec3> points;
+    for (int k = 0; k < count.z; ++k)
+        for (int j = 0; j < count.y; ++j)
+            for (int i = 0; i < count.x; ++i) {
+                const glm::ivec3 step(i, j, k);
+                glm::vec3 x;
+                float inside = std::numeric_limits<float>::infinity();  // distance to the nearest face
+                for (int a = 0; a < 3; ++a) {
+                    if (planar[a]) {
+                        x[a] = clipMin[a];
+                        continue;
+                    }
+                    x[a] = onLattice[a] ? origin[a] + spacing * (first[a] + static_cast<float>(step[a]) + 0.5f)
+                                        : first[a] + static_cast<float>(step[a]) * spacing;
+                    inside = std::min({inside, x[a] - box.min[a], box.max[a] - x[a]});
+                }
+                if (glm::any(glm::lessThan(x, clipMin)) || glm::any(glm::greaterThan(x, clipMax))) continue;
+                if (inside < depth) points.push_back(x);
+            }
+    return points;
+}
+
 void projectOutOfObstacles(std::span<const ObstacleDef> obstacles, ParticleStore& particles, float margin,
                            int threads) {
     if (obstacles.empty()) return;

@@ -49,6 +49,19 @@ inline constexpr float kOnSurface = 1e-3f;
 std::vector<glm::vec3> sampleObstacle(const ObstacleDef& obstacle, const glm::vec3& origin, float spacing, float depth,
                                       const glm::vec3& clipMin, const glm::vec3& clipMax, int threads = 1);
 
+/// A floating box's particles: the points of its own lattice, `spacing` apart and centred on
+/// the box, no deeper than `depth` inside, within [clipMin, clipMax] (an axis where the two
+/// are equal, a 2D world's z, takes the one layer there), in a fixed order. On the fluid's
+/// lattice a face through lattice points takes an extra row of particles that sit on it, so
+/// the box acts half a spacing larger there: a 2D box of density 500 whose sides fell on
+/// lattice columns floated 0.93 spacings high. Centred, the particles' envelope (half a
+/// spacing outside the outermost ones) meets each face within a quarter spacing, exactly
+/// where the box's sides are whole spacings. Along an axis where the box's lattice is the
+/// fluid's (origin + (k + ½)·spacing) it takes the fluid's points to the bit, as
+/// sampleObstacle does.
+std::vector<glm::vec3> sampleBoxCentred(const ObstacleDef& box, const glm::vec3& origin, float spacing, float depth,
+                                        const glm::vec3& clipMin, const glm::vec3& clipMax);
+
 /// Push particles that entered any obstacle back out, `margin` outside its surface.
 void projectOutOfObstacles(std::span<const ObstacleDef> obstacles, ParticleStore& particles, float margin, int threads);
 

@@ -246,7 +246,11 @@ void World::addObstacle(const ObstacleDef& def) {
             clipMin[axis] = w.def.domainMin[axis];
             clipMax[axis] = w.def.domainMax[axis];
         }
-    auto points = sampleObstacle(obstacle, w.latticeOrigin, w.def.particleSpacing, w.h, clipMin, clipMax, w.threads);
+    // A body's buoyancy is the volume its particles hold: a box samples its own lattice. Other
+    // solids sample the fluid's, which the water around them starts on.
+    auto points = dynamic && obstacle.shape == ObstacleDef::Shape::Box
+                      ? sampleBoxCentred(obstacle, w.latticeOrigin, w.def.particleSpacing, w.h, clipMin, clipMax)
+                      : sampleObstacle(obstacle, w.latticeOrigin, w.def.particleSpacing, w.h, clipMin, clipMax, w.threads);
     for (glm::vec3& x : points) x = w.periodic.wrap(x);
     const auto index = static_cast<std::uint32_t>(w.obstacles.size());
     if (obstacle.name.empty()) obstacle.name = "obstacle" + std::to_string(index);
@@ -457,6 +461,9 @@ void World::setOcean(const OceanDef& ocean, MaterialIndex material) {
     w.oceanDef = ocean;
     w.oceanMaterial = material;
     w.openFaces = faces;
+    // Its waves get a wave tank's numerics unless the scene chose its own (issue 42: "a scene
+    // with a wave maker (or an ocean zone)"; docs/waves.md § Defaults).
+    applyWaveNumerics(w.def.solver, w.def.dimensions);
     if (w.def.walls) w.sampleWalls();
 }
 
