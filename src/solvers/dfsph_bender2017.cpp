@@ -218,27 +218,41 @@ void DfsphBender2017::applyPressure(StepContext& ctx, std::span<const float> bou
                 wall = uniform ? pushed : wall + pushed / contrast_.scale(i);
             }
             p.velocity[i] -= dv + psi * wall;
-            if (ctx.loads) recordWallImpulses(ctx, i, psi, boundaryK);
+            if (ctx.loads) loadK_[i] += k_[i];
         });
     });
+    if (ctx.loads && !boundaryK.empty())
+        parallelFor(static_cast<std::uint32_t>(boundaryK.size()), ctx.threads,
+                    [&](std::uint32_t b) { loadBoundaryK_[b] += boundaryK[b]; });
 }
 
-void DfsphBender2017::recordWallImpulses(StepContext& ctx, std::uint32_t i, float psi, std::span<const float> boundaryK) const {
-    // Pair b's share of applyPressure's wall term, psi (k_i + k_b) g_ib with g_ib = V_b ∇W_ib
+void DfsphBender2017::startWallImpulses(const StepContext& ctx, bool walls) {
+    if (!ctx.loads) return;
+    loadK_.assign(ctx.particles.size(), 0.0f);
+    if (walls) loadBoundaryK_.assign(ctx.boundary.position.size(), 0.0f);
+}
+
+void DfsphBender2017::recordWallImpulses(StepContext& ctx, bool mirrored) const {
+    if (!ctx.loads) return;
+    // Pair b's share of the solve's wall terms, psi (k_i + k_b) g_ib with g_ib = V_b ∇W_ib
     // (k_b = k_i mirrored; read through the density contrast's scale), as the impulse on i.
+    // Positions, densities and so g_ib and psi hold over a solve, so its pushes' k sum first.
     const ParticleStore& p = ctx.particles;
-    const glm::vec3 xi = p.position[i];
-    const auto walls = ctx.boundaryNeighbors.of(i);
-    const PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
-    glm::vec3* impulse = ctx.loads->pressureImpulse.data() + ctx.boundaryNeighbors.offset(i);
-    const float toImpulse = -p.mass[i] * psi;
-    const float scale = contrast_.uniform() ? 1.0f : 1.0f / contrast_.scale(i);
-    for (std::size_t k = 0; k < walls.size(); ++k) {
-        const std::uint32_t b = walls[k];
-        const glm::vec3 g = (ctx.boundary.volume * wallF_.factor(f[k])) * ctx.delta(xi, ctx.boundary.position[b]);
-        const float kb = boundaryK.empty() ? k_[i] : scale * boundaryK[b];
-        impulse[k] += (toImpulse * (k_[i] + kb)) * g;
-    }
+    parallelFor(p.size(), ctx.threads, [&](std::uint32_t i) {
+        const auto walls = ctx.boundaryNeighbors.of(i);
+        if (walls.empty()) return;
+        const glm::vec3 xi = p.position[i];
+        const PairKernels::Code* f = wallF_.of(ctx.boundaryNeighbors, i).data();
+        glm::vec3* impulse = ctx.loads->pressureImpulse.data() + ctx.boundaryNeighbors.offset(i);
+        const float toImpulse = -p.mass[i] * ctx.materials[p.material[i]].restDensity / p.density[i];
+        const float scale = contrast_.uniform() ? 1.0f : 1.0f / contrast_.scale(i);
+        for (std::size_t k = 0; k < walls.size(); ++k) {
+            const std::uint32_t b = walls[k];
+            const glm::vec3 g = (ctx.boundary.volume * wallF_.factor(f[k])) * ctx.delta(xi, ctx.boundary.position[b]);
+            const float kb = mirrored ? loadK_[i] : scale * loadBoundaryK_[b];
+            impulse[k] += (toImpulse * (loadK_[i] + kb)) * g;
+        }
+    });
 }
 
 double DfsphBender2017::meanRelativeError(const StepContext& ctx, Solve solve) const {
@@ -255,6 +269,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
     // p.warmDivergence sums κᵛ·Δt over this solve from here on (the pressure output and the
     // next warm start): no array of its own.
     const float warmStart = ctx.solver.divergenceWarmStart;
+    startWallImpulses(ctx, false);
     parallelFor(n, ctx.threads, [&](std::uint32_t i) {
         k_[i] = warmStart * p.warmDivergence[i];
         p.warmDivergence[i] = k_[i];
@@ -297,6 +312,7 @@ int DfsphBender2017::solveDivergence(StepContext& ctx) {
         ctx.refreshGhosts(k_);  // a ghost's error and α miss neighbours
         push(true);
     }
+    recordWallImpulses(ctx, true);
     return iteration;
 }
 
@@ -320,6 +336,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
             wallMoved_[b] = ctx.boundary.position[b] + dt * ctx.boundary.velocity[b];
         });
     }
+    startWallImpulses(ctx, true);  // recorded by step(), once the step is kept
     // Applies the change of κ (fluid, then walls from it) as a velocity change.
     auto push = [&] {
         wall_.update(ctx.boundaryFluidNeighbors, contrast_.wallKappa(kappa, scaledKappa_, ctx.threads), ctx.threads, dt,
@@ -518,6 +535,7 @@ double DfsphBender2017::step(StepContext& ctx) {
         dtCap_ = 0.5 * dt;
         p.velocity = savedVelocity_;
     }
+    recordWallImpulses(ctx, false);  // the density solve kept, not one taken again shorter
     if (!uniform && !densityDiverged_) dtCap_ = std::min(1.25 * dtCap_, static_cast<double>(limits.maxDt));
     const auto dtf = static_cast<float>(dt);
     // The pressure reported is κ averaged over this step and the last, weighted by their

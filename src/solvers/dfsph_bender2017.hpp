@@ -86,8 +86,12 @@ private:
     /// v_i −= Σ_j m_j (k_i/ρ_i + k_j/ρ_j) ∇W_ij + Σ_b Ψ_b ((k_i + k_b)/ρ_i) ∇W_ib for the
     /// current k_; boundary particles take `boundaryK`, or mirror k_i when it is empty.
     void applyPressure(StepContext& ctx, std::span<const float> boundaryK);
-    /// Adds each boundary pair's part of fluid particle i's last applyPressure to ctx.loads.
-    void recordWallImpulses(StepContext& ctx, std::uint32_t i, float psi, std::span<const float> boundaryK) const;
+    /// Zeroes the k sums a solve's pushes leave for its loads (walls: the boundary's too).
+    void startWallImpulses(const StepContext& ctx, bool walls);
+    /// Adds each boundary pair's part of the solve's pushes to ctx.loads, from the k sums;
+    /// `mirrored`: the walls took k_i (the divergence solve). Recorded once per solve, not per
+    /// iteration: per iteration it cost about 5 % of a step with loads (docs/rigid-bodies.md).
+    void recordWallImpulses(StepContext& ctx, bool mirrored) const;
     /// κ̄_i = Σ_j m_j W_ij κ_j / Σ_j m_j W_ij over i and its fluid neighbours
     /// (SolverDef::differenceForm), into error_.
     void smoothKappa(StepContext& ctx);
@@ -99,6 +103,8 @@ private:
     std::vector<float> k_;             ///< κ·Δt (divergence) or κ·Δt² (density) of one iteration
     std::vector<float> kappa_;         ///< κ of the density solve so far, m²/s²
     std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
+    std::vector<float> loadK_;         ///< Σ k_ over a solve's pushes (with loads only)
+    std::vector<float> loadBoundaryK_; ///< Σ boundaryK_ over the density solve's pushes (with loads only)
     WallPressure wall_;
     DensityContrast contrast_;         ///< several rest densities: Solenthaler & Pajarola 2008
     JacobiWeightScale weightScale_;    ///< the Jacobi weights' factor for supports beyond 2 spacings
