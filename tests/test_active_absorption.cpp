@@ -138,10 +138,11 @@ TEST(ClosedFlume, DISABLED_AbsorptionHoldsTheEnvelopeSteady) {
 }
 
 /// A short 2D flume with a damping zone and an absorbing paddle with a short ramp.
-World absorbingFlume(int threads, WaveMakerDef::Absorption absorption = WaveMakerDef::Absorption::On) {
+World absorbingFlume(int threads, WaveMakerDef::Absorption absorption = WaveMakerDef::Absorption::On,
+                     float dampingLength = 0.4f) {
     WaveMakerDef paddle = piston(0.3f, 0.04f, 1.0f, 0.2f);
     paddle.absorption = absorption;
-    return scenarios::planarFlume(0.02f, 1.6f, paddle, 0.4f, threads);
+    return scenarios::planarFlume(0.02f, 1.6f, paddle, dampingLength, threads);
 }
 
 /// The absorbing flume run past the start of the absorption: every particle by id, and the
@@ -159,7 +160,7 @@ std::vector<glm::vec3> absorbingRun(int threads, double seconds, double* displac
     return byId;
 }
 
-TEST(ActiveAbsorption, CorrectsThePaddleBitIdenticallyOnOneAndTwoThreadsAndIsOffByDefault) {
+TEST(ActiveAbsorption, CorrectsThePaddleBitIdenticallyOnOneAndTwoThreadsAndIsOnByDefaultWithADampingZone) {
     double moved = 0.0;
     const auto one = absorbingRun(1, 0.6, &moved), two = absorbingRun(2, 0.6);
     ASSERT_EQ(one.size(), two.size());
@@ -168,10 +169,13 @@ TEST(ActiveAbsorption, CorrectsThePaddleBitIdenticallyOnOneAndTwoThreadsAndIsOff
     World plain = absorbingFlume(1, WaveMakerDef::Absorption::Off);
     const double prescribed = plain.waveMakerDisplacement(0, 0.6);
     EXPECT_GT(std::abs(moved - prescribed), 1e-5);
-    // Automatic is off for now (docs/waves.md § Active absorption), damping zone or not.
+    // Automatic: on where the far end absorbs (here a damping zone), off where it reflects.
     World automatic = absorbingFlume(1, WaveMakerDef::Absorption::Automatic);
     automatic.advance(0.6);
-    EXPECT_EQ(automatic.waveMakerDisplacement(0, 0.6), prescribed);
+    EXPECT_EQ(automatic.waveMakerDisplacement(0, 0.6), moved);
+    World closed = absorbingFlume(1, WaveMakerDef::Absorption::Automatic, 0.0f);
+    closed.advance(0.6);
+    EXPECT_EQ(closed.waveMakerDisplacement(0, 0.6), prescribed);
 }
 
 TEST(ActiveAbsorption, ResumesBitIdenticallyFromACheckpoint) {

@@ -388,10 +388,10 @@ struct WaveMakerDef {
     /// Active absorption at the paddle (scene key wavemaker.absorption; Schäffer & Klopman
     /// 2000, sources/active_absorption_schaffer_klopman2000.hpp): the piston also moves with the
     /// waves arriving at it, measured a few spacings in front of its face, so waves reflected in
-    /// the tank leave it instead of building up. Automatic: off for now (issue 42 asks it on
-    /// with a damping zone or a beach; in its own 2D flume that made the paddle lose the water,
-    /// docs/notes/waves.md). On: a piston making regular or irregular waves; refused for a flap
-    /// or a solitary wave.
+    /// the tank leave it instead of building up. Automatic: on for a piston making regular or
+    /// irregular waves in a tank whose far end absorbs (a damping zone, a beach: a fixed plane
+    /// facing the paddle, or an ocean's open +x side), else off. On: a piston making regular or
+    /// irregular waves; refused for a flap or a solitary wave.
     enum class Absorption { Automatic, On, Off };
     Absorption absorption = Absorption::Automatic;
 };

@@ -505,13 +505,22 @@ struct World::Impl {
         boundary.maxSpeed = 0.0f;
     }
 
-    /// Whether a paddle's absorber acts: only when asked for. Automatic is meant to switch it
-    /// on in a tank whose far end absorbs (a damping zone, or a beach: a fixed plane facing the
-    /// paddle), as issue 42 asks, but in issue 42's own 2D flume it made the paddle lose the
-    /// water at 8.5-9.1 s and the gauges surge by up to 8 cm (docs/notes/waves.md § Active
-    /// absorption): until that is understood, automatic stays off.
+    /// Whether a paddle's absorber acts: when asked for, or by default (Automatic) in a tank
+    /// whose far end absorbs, as issue 42 asks: a damping zone facing the paddle, a beach (a
+    /// fixed plane facing it) or an ocean's open +x side. Until 2D dfsph's divergence solve
+    /// acted, issue 42's 2D flume lost the water at the paddle at 8.5–9.1 s with it; now it runs
+    /// 30 s with waves of 0.027–0.029 m for 0.03 (docs/notes/waves.md § Active absorption).
     [[nodiscard]] bool absorbing(const Paddle& paddle) const {
-        return paddle.absorber && paddle.maker.def().absorption == WaveMakerDef::Absorption::On;
+        if (!paddle.absorber) return false;
+        const WaveMakerDef::Absorption a = paddle.maker.def().absorption;
+        return a == WaveMakerDef::Absorption::On || (a == WaveMakerDef::Absorption::Automatic && farEndAbsorbs());
+    }
+    [[nodiscard]] bool farEndAbsorbs() const {
+        for (const DampingZoneDef& zone : dampingZones)
+            if (zone.xEnd > zone.xStart) return true;
+        for (const ObstacleDef& o : fixedObstacles)
+            if (o.shape == ObstacleDef::Shape::Plane && o.normal.x < 0.0f) return true;
+        return (openFaces & 2u) != 0;
     }
     /// Active absorption (sources/active_absorption_schaffer_klopman2000.hpp): each absorbing
     /// paddle measures the surface at its gauge at the step's start and takes the correction
