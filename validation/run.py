@@ -44,6 +44,7 @@ CASES = [
     ("interfacial_wave", multifluid.interfacial_wave),
     ("regular_waves", waves.flume),
     ("sinking_cylinder", bodies.sinking_cylinder),
+    ("floating_box_waves", bodies.floating_box_waves),
 ]
 
 
