@@ -507,9 +507,10 @@ struct World::Impl {
 
     /// Whether a paddle's absorber acts: when asked for, or by default (Automatic) in a tank
     /// whose far end absorbs, as issue 42 asks: a damping zone facing the paddle, a beach (a
-    /// fixed plane facing it) or an ocean's open +x side. Until 2D dfsph's divergence solve
-    /// acted, issue 42's 2D flume lost the water at the paddle at 8.5–9.1 s with it; now it runs
-    /// 30 s with waves of 0.027–0.029 m for 0.03 (docs/notes/waves.md § Active absorption).
+    /// fixed plane sloping up away from it; a vertical wall reflects) or an ocean's open +x
+    /// side. Until 2D dfsph's divergence solve acted, issue 42's 2D flume lost the water at the
+    /// paddle at 8.5–9.1 s with it; now it runs 30 s with waves of 0.027–0.029 m for 0.03
+    /// (docs/notes/waves.md § Active absorption).
     [[nodiscard]] bool absorbing(const Paddle& paddle) const {
         if (!paddle.absorber) return false;
         const WaveMakerDef::Absorption a = paddle.maker.def().absorption;
@@ -518,8 +519,8 @@ struct World::Impl {
     [[nodiscard]] bool farEndAbsorbs() const {
         for (const DampingZoneDef& zone : dampingZones)
             if (zone.xEnd > zone.xStart) return true;
-        for (const ObstacleDef& o : fixedObstacles)
-            if (o.shape == ObstacleDef::Shape::Plane && o.normal.x < 0.0f) return true;
+        for (const ObstacleDef& o : fixedObstacles)  // a slope rising away from the paddle, not a wall
+            if (o.shape == ObstacleDef::Shape::Plane && o.normal.x < 0.0f && o.normal.y > 0.0f) return true;
         return (openFaces & 2u) != 0;
     }
     /// Active absorption (sources/active_absorption_schaffer_klopman2000.hpp): each absorbing
