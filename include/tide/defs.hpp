@@ -390,8 +390,8 @@ struct WaveMakerDef {
     /// waves arriving at it, measured a few spacings in front of its face, so waves reflected in
     /// the tank leave it instead of building up. Automatic: on for a piston making regular or
     /// irregular waves in a tank whose far end absorbs (a damping zone, a beach: a fixed plane
-    /// sloping up away from the paddle, or an ocean's open +x side), else off. On: a piston making regular or
-    /// irregular waves; refused for a flap or a solitary wave.
+    /// sloping up away from the paddle, or an ocean's open +x side), else off. On: a piston
+    /// making regular or irregular waves; refused for a flap or a solitary wave.
     enum class Absorption { Automatic, On, Off };
     Absorption absorption = Absorption::Automatic;
 };
