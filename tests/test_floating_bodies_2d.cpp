@@ -303,7 +303,7 @@ double fittedPeriod(const std::vector<std::pair<double, double>>& y, double gues
 // differently in float: the run's scatter is ~0.7 %); 1 cm and 6.7 mm read 0.7736 and 0.7680 s
 // (+0.7 %, twice the cost); in a 6 m tank, over four placements of the
 // box against the lattice, 0.7731–0.7778 s at 1 cm and 0.7715–0.7731 s at 6.7 mm. While the
-// box sampled the fluid's lattice, a placement with its sides on lattice columns (here at 6.7 mm)
+// box sampled the fluid's lattice, a placement with its sides on lattice columns (this box at 6.7 mm)
 // made it a spacing wider and read anywhere from −4 to +6 %.
 TEST(FloatingBodies2D, TheHeavePeriodOfAFloatingBoxConvergesWithResolution) {
     const double undamped = 2.0 * M_PI * std::sqrt(500.0 * 0.1 * 0.2 / (1000.0 * 9.81 * 0.1));
