@@ -58,8 +58,8 @@ def floating_box_waves(ctx):
     period = 1.2
     exp = read_data("floating_box_regular_waves_ren2015.csv")
     scene = load_scene("floating_box_ren2015_2d.json")
-    if ctx.quick:
-        scene["particle_spacing"] = 0.0125
+    # The roll converges slowly: +47 % at 1 cm (the scene's), +26 % at 7 mm, +8 % at 5 mm.
+    scene["particle_spacing"] = 0.0125 if ctx.quick else 0.005
     out, wall = ctx.tide.run("floating_box_ren2015", scene)
     b = read_table(out + "/bodies.csv")
     t = b["time"]
