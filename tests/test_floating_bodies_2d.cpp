@@ -145,28 +145,35 @@ World tankWithFloatingBox(float width, float height, double density, float spin,
     return world;
 }
 
-/// The draft of a 2D box 0.1 × 0.1 m of density 500, heave only, centred at `x` in still water
-/// 0.3 m deep at 1 cm: its mean over 0.5–1 s after release at Archimedes' draft.
-double meanDraftOfAFloatingBox(float x) {
+/// A 2D tank `width` wide with still water 0.3 m deep at `spacing`, and a box [x0, x1] × [y0, y1]
+/// of density 500, heave only, held while the water settles for 0.3 s.
+World tankWithHeavingBox(float width, float spacing, float x0, float x1, float y0, float y1) {
     WorldDef def;
     def.dimensions = 2;
-    def.domainMax = {0.6f, 0.5f, 0.0f};
-    def.particleSpacing = 0.01f;
+    def.domainMax = {width, 0.5f, 0.0f};
+    def.particleSpacing = spacing;
     def.threads = 1;
     World world(def);
     world.addMaterial(MaterialDef{});
     ObstacleDef box;
-    box.min = {x - 0.05f, 0.25f, 0.0f};
-    box.max = {x + 0.05f, 0.35f, 0.0f};
+    box.min = {x0, y0, 0.0f};
+    box.max = {x1, y1, 0.0f};
     BodyDynamicsDef body;
     body.density = 500.0;
     body.freeAxes = {"y"};
     box.dynamics = body;
     world.addObstacle(box);
     BlockDef water;
-    water.max = {0.6f, 0.3f, 0.0f};
+    water.max = {width, 0.3f, 0.0f};
     world.addBlock(water);
     world.settle(0.3);
+    return world;
+}
+
+/// The draft of a 2D box 0.1 × 0.1 m of density 500, heave only, centred at `x` in still water
+/// 0.3 m deep at 1 cm: its mean over 0.5–1 s after release at Archimedes' draft.
+double meanDraftOfAFloatingBox(float x) {
+    World world = tankWithHeavingBox(0.6f, 0.01f, x - 0.05f, x + 0.05f, 0.25f, 0.35f);
     world.advance(0.5);
     double sum = 0.0, time = 0.0;
     world.advance(0.5, [&] {
@@ -235,25 +242,7 @@ using namespace tide;
 /// In a 1.2 m tank they came back within the fit and moved the period by up to 10 %: 0.809,
 /// 0.830, 0.789, 0.807 s at 12.5, 10, 6.7 and 5 mm against 0.743, 0.748, 0.731, 0.743 s here.
 std::vector<std::pair<double, double>> heaveDecay(float spacing) {
-    WorldDef def;
-    def.dimensions = 2;
-    def.domainMax = {2.4f, 0.5f, 0.0f};
-    def.particleSpacing = spacing;
-    def.threads = 1;
-    World world(def);
-    world.addMaterial(MaterialDef{});
-    ObstacleDef box;
-    box.min = {1.15f, 0.22f, 0.0f};
-    box.max = {1.25f, 0.42f, 0.0f};
-    BodyDynamicsDef body;
-    body.density = 500.0;
-    body.freeAxes = {"y"};
-    box.dynamics = body;
-    world.addObstacle(box);
-    BlockDef water;
-    water.max = {2.4f, 0.3f, 0.0f};
-    world.addBlock(water);
-    world.settle(0.3);
+    World world = tankWithHeavingBox(2.4f, spacing, 1.15f, 1.25f, 0.22f, 0.42f);
     const double start = world.time();
     std::vector<std::pair<double, double>> y{{0.0, world.bodies().at(0).position.y}};
     world.advance(1.6, [&] { y.emplace_back(world.time() - start, world.bodies().at(0).position.y); });

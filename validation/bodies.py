@@ -81,7 +81,10 @@ def floating_box_waves(ctx):
     fig, axes = ctx.figure(3, width=12)
     # The experiment's clock starts on its first crest; the run's record is shifted to put a
     # heave crest of its steady waves on one of the experiment's.
-    shift = float(t[np.argmax(np.where(t > 6.0, b["box_y"], -np.inf))] - exp["time_s"][np.argmax(np.where(exp["time_s"] > 4.0, exp["heave_m"], -np.inf))])
+    def highest_after(time, value, start):
+        return float(time[np.argmax(np.where(time > start, value, -np.inf))])
+
+    shift = highest_after(t, b["box_y"], 6.0) - highest_after(exp["time_s"], exp["heave_m"], 4.0)
     y0, x0 = float(b["box_y"][0]), float(b["box_x"][0])
     for a, run_value, exp_value, label in ((axes[0], b["box_x"] - x0, exp["surge_m"] - exp["surge_m"][0], "surge (m)"),
                                             (axes[1], b["box_y"] - y0, exp["heave_m"], "heave (m)"),
