@@ -445,7 +445,7 @@ TEST_F(Exporters, WritingIntoAMissingDirectoryThrowsNamingThePath) {
     for (const Format format : {Format::Csv, Format::Ply, Format::Vtu, Format::Obj}) {
         const fs::path file = dir_ / "missing" / (std::string("frame.").append(extension(format)));
         try {
-            writeFrame(file, format, particles_, SurfaceMeshDef{0.02f, {}, 1});
+            writeFrame(file, format, particles_, SurfaceMeshDef{0.02f, {}, 1, {}});
             FAIL() << "wrote into a missing directory";
         } catch (const std::runtime_error& e) {
             const std::string what = e.what();
@@ -467,7 +467,7 @@ TEST_F(Exporters, EmptyStoreGivesHeaderOnlyFrames) {
     EXPECT_NE(readFile(dir_ / "f.ply").find("element vertex 0\n"), std::string::npos);
     writeFrame(dir_ / "f.vtu", Format::Vtu, empty);
     EXPECT_NE(readFile(dir_ / "f.vtu").find("NumberOfPoints=\"0\""), std::string::npos);
-    writeFrame(dir_ / "f.obj", Format::Obj, empty, SurfaceMeshDef{0.02f, {}, 1});
+    writeFrame(dir_ / "f.obj", Format::Obj, empty, SurfaceMeshDef{0.02f, {}, 1, {}});
     EXPECT_EQ(readFile(dir_ / "f.obj"), "# tide: the fluid's surface, one object per material (m)\n");
 }
 

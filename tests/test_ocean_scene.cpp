@@ -185,24 +185,55 @@ TEST(OceanScene, GaugesOutsideTheDomainReadTheFarField) {
     EXPECT_EQ(scene.gauges.front().x, -20.0f);
 }
 
+constexpr const char* kSea = R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2}})";
+
+TEST(OceanScene, FarFieldOfObjFramesIsReadAndItsProblemsNamed) {
+    const io::Scene scene = parse(sceneWith(kSea, R"(, "output": {"formats": ["obj"], "far_field": {"extent": 3, "spacing": 0.2}})"));
+    EXPECT_TRUE(scene.output.farField);
+    EXPECT_EQ(scene.output.farFieldExtent, 3.0);
+    EXPECT_EQ(scene.output.farFieldSpacing, 0.2);
+    const io::Scene defaults = parse(sceneWith(kSea));
+    EXPECT_TRUE(defaults.output.farField);
+    EXPECT_EQ(defaults.output.farFieldExtent, 0.0);  // io::defaultFarFieldExtent
+    EXPECT_FALSE(parse(sceneWith(kSea, R"(, "output": {"far_field": false})")).output.farField);
+
+    const auto negative = problemsOf(sceneWith(kSea, R"(, "output": {"far_field": {"spacing": -0.1}})"));
+    ASSERT_EQ(negative.size(), 1u);
+    EXPECT_NE(negative[0].find("output.far_field.spacing"), std::string::npos) << negative[0];
+    EXPECT_NE(negative[0].find("-0.1"), std::string::npos) << negative[0];
+    const auto noOcean = problemsOf(R"({"domain": {"min": [0, 0, 0], "max": [1, 1, 1]}, "particle_spacing": 0.1, "end_time": 0.1,
+        "materials": [{"name": "water", "density": 1000}], "output": {"far_field": {"extent": 3}}})");
+    ASSERT_EQ(noOcean.size(), 1u);
+    EXPECT_NE(noOcean[0].find("output.far_field"), std::string::npos) << noOcean[0];
+}
+
 TEST(OceanScene, SchemaAgreesWithTheParser) {
     // Debian's python3-jsonschema: scenes the parser takes pass the schema, and the contract
     // mistakes it refuses fail it.
-    const std::vector<std::pair<std::string, bool>> cases = {
+    struct Case {
+        std::string ocean;
+        bool ok;
+        std::string extra;  ///< other top-level keys
+    };
+    const std::vector<Case> cases = {
         {R"({"depth": 0.7, "zone_width": 1.5, "open_sides": ["-x", "+z"], "waves": {"type": "jonswap", "hs": 0.1,
-            "tp": 3, "direction": 30, "spreading": 10, "gamma": 3.3, "seed": 12, "components": 48, "directions": 8}})", true},
-        {R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2}})", true},
-        {R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2, "hs": 1}})", false},
-        {R"({"depth": 0.7, "waves": {"type": "jonswap", "hs": 0.1, "tp": 3, "period": 2}})", false},
-        {R"({"depth": 0.7, "waves": {"type": "jonswap", "hs": 0.1}})", false},
-        {R"({"depth": 0.7, "open_sides": ["x"], "waves": {"type": "jonswap", "hs": 0.1, "tp": 3}})", false},
-        {R"({"depth": 0.7, "waves": {"type": "jonswap", "hs": 0.1, "tp": 3, "spread": 2}})", false},
+            "tp": 3, "direction": 30, "spreading": 10, "gamma": 3.3, "seed": 12, "components": 48, "directions": 8}})", true, ""},
+        {R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2}})", true, ""},
+        {R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2, "hs": 1}})", false, ""},
+        {R"({"depth": 0.7, "waves": {"type": "jonswap", "hs": 0.1, "tp": 3, "period": 2}})", false, ""},
+        {R"({"depth": 0.7, "waves": {"type": "jonswap", "hs": 0.1}})", false, ""},
+        {R"({"depth": 0.7, "open_sides": ["x"], "waves": {"type": "jonswap", "hs": 0.1, "tp": 3}})", false, ""},
+        {R"({"depth": 0.7, "waves": {"type": "jonswap", "hs": 0.1, "tp": 3, "spread": 2}})", false, ""},
+        {kSea, true, R"(, "output": {"formats": ["obj"], "far_field": {"extent": 3, "spacing": 0.2}})"},
+        {kSea, true, R"(, "output": {"far_field": false})"},
+        {kSea, false, R"(, "output": {"far_field": {"extent": 0}})"},
+        {kSea, false, R"(, "output": {"far_field": {"reach": 3}})"},
     };
     const auto dir = std::filesystem::temp_directory_path() / ("tide_ocean_schema_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     for (std::size_t i = 0; i < cases.size(); ++i) {
-        const std::string text = sceneWith(cases[i].first);
-        EXPECT_EQ(problemsOf(text).empty(), cases[i].second) << cases[i].first;
+        const std::string text = sceneWith(cases[i].ocean, cases[i].extra);
+        EXPECT_EQ(problemsOf(text).empty(), cases[i].ok) << text;
         std::ofstream(dir / (std::to_string(i) + ".json")) << text;
     }
     const std::string command = "/usr/bin/python3 -c \"import json, sys, jsonschema\n"
@@ -220,7 +251,7 @@ TEST(OceanScene, SchemaAgreesWithTheParser) {
     for (int c; (c = std::fgetc(pipe)) != EOF;) verdicts += static_cast<char>(c);
     EXPECT_EQ(pclose(pipe), 0);
     std::string expected;
-    for (const auto& c : cases) expected += c.second ? '1' : '0';
+    for (const auto& c : cases) expected += c.ok ? '1' : '0';
     EXPECT_EQ(verdicts, expected);
     std::filesystem::remove_all(dir);
 }

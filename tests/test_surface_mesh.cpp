@@ -87,7 +87,7 @@ TEST_P(SurfaceMeshBlock, SurfaceLiesOnItsFaces) {
     const float s = GetParam();
     ParticleStore p;
     addBlock(p, {0, 0, 0}, {0.2f, 0.1f, 0.16f}, s);
-    const SurfaceMesh mesh = buildSurfaceMesh(p, SurfaceMeshDef{s, {"water"}, 1});
+    const SurfaceMesh mesh = buildSurfaceMesh(p, SurfaceMeshDef{s, {"water"}, 1, {}});
     ASSERT_EQ(mesh.objects.size(), 1u);
     EXPECT_EQ(mesh.objects[0].name, "water");
     EXPECT_TRUE(closedAndConsistent(mesh, 0, mesh.triangles.size()));
@@ -131,7 +131,7 @@ TEST(SurfaceMesh, BallEnclosesItsParticlesVolume) {
             p.position.push_back(all.position[i]);
             p.material.push_back(0);
         }
-    const SurfaceMesh mesh = buildSurfaceMesh(p, SurfaceMeshDef{s, {}, 1});
+    const SurfaceMesh mesh = buildSurfaceMesh(p, SurfaceMeshDef{s, {}, 1, {}});
     ASSERT_EQ(mesh.objects.size(), 1u);
     EXPECT_EQ(mesh.objects[0].name, "material_0");
     EXPECT_TRUE(closedAndConsistent(mesh, 0, mesh.triangles.size()));
@@ -158,7 +158,7 @@ TEST(SurfaceMesh, OneObjectPerMaterialInTheObjText) {
     ParticleStore p;
     addBlock(p, {0, 0, 0}, {0.1f, 0.1f, 0.1f}, s, 0);
     addBlock(p, {0.2f, 0, 0}, {0.3f, 0.06f, 0.1f}, s, 2);  // material 1 has no particles
-    const SurfaceMesh mesh = buildSurfaceMesh(p, SurfaceMeshDef{s, {"oil", "air", "water"}, 1});
+    const SurfaceMesh mesh = buildSurfaceMesh(p, SurfaceMeshDef{s, {"oil", "air", "water"}, 1, {}});
     ASSERT_EQ(mesh.objects.size(), 2u);
     EXPECT_EQ(mesh.objects[0].name, "oil");
     EXPECT_EQ(mesh.objects[1].name, "water");
@@ -205,7 +205,7 @@ TEST(SurfaceMesh, BadSpacingIsRefusedByName) {
     addBlock(p, {0, 0, 0}, {0.1f, 0.1f, 0.1f}, 0.02f);
     auto message = [&](float spacing) {
         try {
-            (void)buildSurfaceMesh(p, SurfaceMeshDef{spacing, {}, 0});
+            (void)buildSurfaceMesh(p, SurfaceMeshDef{spacing, {}, 0, {}});
         } catch (const std::invalid_argument& e) {
             return std::string(e.what());
         }
@@ -219,7 +219,7 @@ TEST(SurfaceMesh, BadSpacingIsRefusedByName) {
 }
 
 TEST(SurfaceMesh, NoParticlesNoObjects) {
-    const SurfaceMesh mesh = buildSurfaceMesh(ParticleStore{}, SurfaceMeshDef{0.02f, {}, 0});
+    const SurfaceMesh mesh = buildSurfaceMesh(ParticleStore{}, SurfaceMeshDef{0.02f, {}, 0, {}});
     EXPECT_TRUE(mesh.objects.empty());
     EXPECT_TRUE(mesh.triangles.empty());
 }
@@ -234,7 +234,7 @@ TEST(SurfaceMesh, LoneParticleAndThinSheetShow) {
     p.position.emplace_back(0.5f, 0.5f, 0.5f);
     p.material.push_back(0);
     addBlock(p, {0, 0, 0}, {0.2f, s, 0.2f}, s, 1);  // one layer of 10 × 10
-    const SurfaceMesh mesh = buildSurfaceMesh(p, SurfaceMeshDef{s, {"drop", "sheet"}, 1});
+    const SurfaceMesh mesh = buildSurfaceMesh(p, SurfaceMeshDef{s, {"drop", "sheet"}, 1, {}});
     ASSERT_EQ(mesh.objects.size(), 2u);
     const double cube = static_cast<double>(s) * s * s;
     for (const SurfaceMesh::Object& o : mesh.objects) {
@@ -264,8 +264,8 @@ TEST(SurfaceMesh, SameMeshOnAnyThreadCount) {
         p.position[i] += 0.3f * s * glm::vec3(std::sin(1.7f * k), std::sin(2.3f * k + 1.0f), std::sin(3.1f * k + 2.0f));
         if (i % 97 == 0) p.position[i].y += 0.05f + 0.002f * static_cast<float>(i % 7);
     }
-    const SurfaceMesh one = buildSurfaceMesh(p, SurfaceMeshDef{s, {}, 1});
-    const SurfaceMesh two = buildSurfaceMesh(p, SurfaceMeshDef{s, {}, 2});
+    const SurfaceMesh one = buildSurfaceMesh(p, SurfaceMeshDef{s, {}, 1, {}});
+    const SurfaceMesh two = buildSurfaceMesh(p, SurfaceMeshDef{s, {}, 2, {}});
     ASSERT_GT(one.triangles.size(), 1000u);
     EXPECT_EQ(one.vertices, two.vertices);
     EXPECT_EQ(one.triangles, two.triangles);

@@ -19,6 +19,8 @@
 #include <nlohmann/json.hpp>
 
 #include <tide/io/checkpoint.hpp>
+#include <glm/geometric.hpp>
+
 #include <tide/io/exporters.hpp>
 #include <tide/io/scene.hpp>
 
@@ -179,6 +181,20 @@ std::string pvtuName(int frame) {
     char name[64];
     std::snprintf(name, sizeof name, "frame_%05d.pvtu", frame);
     return name;
+}
+
+/// The far field's mesh an obj frame of an ocean scene carries (3D; output.far_field), or none.
+std::optional<io::FarFieldMeshDef> farFieldMesh(const io::Scene& scene) {
+    const bool obj = std::find(scene.output.formats.begin(), scene.output.formats.end(), io::Format::Obj) != scene.output.formats.end();
+    if (!obj || !scene.ocean || !scene.output.farField || scene.world.dimensions != 3) return std::nullopt;
+    io::FarFieldMeshDef far;
+    far.ocean = *scene.ocean;
+    far.gravity = glm::length(scene.world.gravity);
+    far.nearMin = scene.world.domainMin;
+    far.nearMax = scene.world.domainMax;
+    far.extent = scene.output.farFieldExtent > 0.0 ? scene.output.farFieldExtent : io::defaultFarFieldExtent(far.ocean, far.gravity);
+    far.spacing = scene.output.farFieldSpacing > 0.0 ? scene.output.farFieldSpacing : io::defaultFarFieldSpacing(far.ocean, far.gravity);
+    return far;
 }
 
 /// A split run's frame: every rank's own particles gathered on rank 0, which writes the file
@@ -388,8 +404,9 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
     bool reportedFull = false;
     Measurements measurements(scene);
     measurements.restoreRows(done.gaugeRows, done.probeRows, done.forceRows, done.bodyRows);
-    io::SurfaceMeshDef surface{scene.world.particleSpacing, {}, scene.world.threads};  // the obj format's
+    io::SurfaceMeshDef surface{scene.world.particleSpacing, {}, scene.world.threads, {}};  // the obj format's
     for (const MaterialDef& m : scene.materials) surface.materialNames.push_back(m.name);
+    surface.farField = farFieldMesh(scene);
     int lastFrame = firstFrame - 1;
     try {
         for (int frame = firstFrame; frame <= frames; ++frame) {
@@ -404,6 +421,7 @@ int runCommand(const RunOptions& o, comm::Communicator* comm) {
                     progress.step(world->time(), frame, static_cast<std::uint32_t>(n), sessionSteps);
                 });
             }
+            if (surface.farField) surface.farField->time = world->time(), surface.farField->ramp = world->oceanRamp();
             if (split) {
                 writeSplitFrame(*comm, *world, dir, frame, scene.output.formats, surface, o.gather, realStderr);
             } else {

@@ -221,7 +221,7 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
         scene.emitters.push_back(e);
     }
 
-    if (root.contains("output") && r.object(root["output"], "output", {"fps", "formats"})) {
+    if (root.contains("output") && r.object(root["output"], "output", {"fps", "formats", "far_field"})) {
         const json& out = root["output"];
         if (auto fps = r.number(out, "fps", "output", false, 0.0, 1e4, true)) scene.output.fps = *fps;
         if (out.contains("formats")) {
@@ -233,6 +233,17 @@ Scene parseScene(std::string_view text, const std::string& source, const std::fi
                 if (!f) r.fail(path, "must be \"vtu\", \"ply\", \"csv\" or \"obj\", got " + show(formats[i]));
                 else if (std::find(scene.output.formats.begin(), scene.output.formats.end(), *f) == scene.output.formats.end())
                     scene.output.formats.push_back(*f);
+            }
+        }
+        if (out.contains("far_field")) {
+            const json& far = out["far_field"];
+            if (!scene.ocean) {
+                r.fail("output.far_field", "the scene has no ocean to draw beyond the domain");
+            } else if (far.is_boolean()) {
+                scene.output.farField = far.get<bool>();
+            } else if (r.object(far, "output.far_field", {"extent", "spacing"})) {
+                if (auto e = r.number(far, "extent", "output.far_field", false, 0.0, 1e300, true)) scene.output.farFieldExtent = *e * scale;
+                if (auto d = r.number(far, "spacing", "output.far_field", false, 0.0, 1e300, true)) scene.output.farFieldSpacing = *d * scale;
             }
         }
     }

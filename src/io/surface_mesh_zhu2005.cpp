@@ -148,6 +148,11 @@ SurfaceMesh buildSurfaceMesh(const ParticleStore& particles, const SurfaceMeshDe
         object.triangleCount = mesh.triangles.size() - object.firstTriangle;
         mesh.objects.push_back(std::move(object));
     }
+    if (def.farField) {
+        FarFieldMeshDef farField = *def.farField;
+        farField.threads = threads;
+        appendFarField(mesh, farField);
+    }
     return mesh;
 }
 

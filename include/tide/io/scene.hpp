@@ -23,6 +23,11 @@ namespace tide::io {
 struct OutputDef {
     double fps = 30.0;                        ///< frames per simulated second
     std::vector<Format> formats{Format::Vtu};
+    /// An ocean scene's far field in obj frames (`output.far_field`): how far its mesh reaches
+    /// beyond the near field and its points' spacing, m; 0 picks the default
+    /// (io::defaultFarFieldExtent, io::defaultFarFieldSpacing). farField false: none.
+    bool farField = true;
+    double farFieldExtent = 0.0, farFieldSpacing = 0.0;
 };
 
 /// Where renderers look from (scene key `camera`), in metres.

@@ -13,12 +13,14 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include <tide/io/far_field_mesh.hpp>
 #include <tide/particles.hpp>
 
 namespace tide::io {
@@ -31,6 +33,9 @@ struct SurfaceMeshDef {
     /// The mesh's object names, by material index; a material beyond the list is "material_<index>".
     std::vector<std::string> materialNames;
     int threads = 0;  ///< worker threads; 0: all cores
+    /// An ocean scene's far field, appended as the object "far_field" (appendFarField) with
+    /// this def's threads; none when empty.
+    std::optional<FarFieldMeshDef> farField;
 };
 
 /// One triangle mesh per material present, in one vertex array.
@@ -44,7 +49,9 @@ struct SurfaceMesh {
     std::vector<glm::vec3> vertices;  ///< m
     /// Indices into vertices, counter-clockwise seen from outside the fluid (normals point out).
     std::vector<std::array<std::uint32_t, 3>> triangles;
-    std::vector<Object> objects;  ///< by increasing material index, materials with particles only
+    /// By increasing material index, materials with particles only; then "far_field" (material 0,
+    /// the ocean's water) when SurfaceMeshDef::farField is set.
+    std::vector<Object> objects;
 };
 
 /// The surface of each material's particles. Throws std::invalid_argument naming the particle
