@@ -211,6 +211,27 @@ TEST(RenderCli, OceanShowsTheSeaToTheHorizonAroundTheNearField) {
         widest = std::max(widest, hi - lo);
     }
     EXPECT_GT(widest, 10.0) << "the widest range of blue along a row of far-field pixels";
+    // No seam at the open face nearest the camera (z = 0.6): the mean colour of a strip across
+    // the middle of its zone (the far field half blended over the particles' surface) is that
+    // of the strip just outside the face, to within the waves' own variation: 7.2 apart, where
+    // the particles' surface alone (before the zones' blend) read 56 apart.
+    glm::dvec3 inside(0.0), outside(0.0);
+    int nIn = 0, nOut = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const glm::vec3 d = tide::render::pixelRay(camera, image.width, image.height, glm::vec2(x + 0.5f, y + 0.5f));
+            if (d.y >= 0.0f) continue;
+            const glm::vec3 hit = camera.eye + d * ((0.15f - camera.eye.y) / d.y);  // on still water
+            if (hit.x < 0.1f || hit.x > 0.5f) continue;
+            if (hit.z > 0.45f && hit.z < 0.55f) inside += glm::dvec3(image.at(x, y)), ++nIn;
+            if (hit.z > 0.6f && hit.z < 0.63f) outside += glm::dvec3(image.at(x, y)), ++nOut;
+        }
+    ASSERT_GT(nIn, 50);
+    ASSERT_GT(nOut, 50);
+    const double seam = glm::length(inside / double(nIn) - outside / double(nOut));
+    std::printf("seam at the +z face: mean colour across its zone (%.0f %.0f %.0f), outside (%.0f %.0f %.0f): %.1f apart\n",
+                inside.x / nIn, inside.y / nIn, inside.z / nIn, outside.x / nOut, outside.y / nOut, outside.z / nOut, seam);
+    EXPECT_LT(seam, 15.0);
 }
 
 TEST(RenderCli, ParticleModeShowsEachMaterialsColour) {

@@ -9,6 +9,9 @@
 #include <thread>
 
 #include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+#include <tide/ocean.hpp>
 
 #include "shaders.hpp"
 
@@ -127,8 +130,10 @@ void FarFieldSea::update(const Snapshot& snapshot, const Camera& camera) {
     sampledCentre_ = centre;
 }
 
-void FarFieldSea::draw(const Frame& frame, const Camera& camera, const Snapshot& snapshot, const WaterLook& water) const {
+void FarFieldSea::draw(const Frame& frame, const Camera& camera, const Snapshot& snapshot, const WaterLook& water,
+                       bool zones) const {
     if (!sea_ || indexCount_ == 0) return;
+    if (zones && snapshot.ocean->openSides.empty()) return;
     program_.use();
     // Raised with the near field's drawn surface, so that the two meet at the open faces.
     const glm::mat4 lift(1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, water.surfaceLift, 0.0f, 1.0f);
@@ -141,6 +146,11 @@ void FarFieldSea::draw(const Frame& frame, const Camera& camera, const Snapshot&
     program_.set("uNearMin", glm::vec2(snapshot.domainMin.x, snapshot.domainMin.z));
     program_.set("uNearMax", glm::vec2(snapshot.domainMax.x, snapshot.domainMax.z));
     program_.set("uFogDistance", water.fogDistance);
+    program_.set("uZones", zones ? 1 : 0);
+    glm::vec4 open(0.0f);
+    for (const OceanSide side : snapshot.ocean->openSides) open[static_cast<int>(side)] = 1.0f;  // -x, +x, -z, +z
+    program_.set("uOpen", open);
+    program_.set("uZoneWidth", static_cast<float>(oceanZoneWidth(*snapshot.ocean, glm::length(snapshot.gravity))));
     glBindVertexArray(vertexArray_);
     glDrawElements(GL_TRIANGLES, indexCount_, GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);

@@ -40,8 +40,11 @@ public:
     /// Samples the sea of `snapshot` for its time around the camera (nothing without an ocean).
     void update(const Snapshot& snapshot, const Camera& camera);
     /// Draws the mesh into the bound framebuffer, depth tested; `water` is how the near field's
-    /// water is shaded, so that the two match.
-    void draw(const Frame& frame, const Camera& camera, const Snapshot& snapshot, const WaterLook& water) const;
+    /// water is shaded, so that the two match. Around the near field, or (`zones`) over its
+    /// coupling zones with an alpha from 1 at the open faces to 0 at the zones' inner edges,
+    /// to be blended over the particles' shaded surface.
+    void draw(const Frame& frame, const Camera& camera, const Snapshot& snapshot, const WaterLook& water,
+              bool zones = false) const;
     [[nodiscard]] bool active() const { return sea_ != nullptr; }
 
 private:

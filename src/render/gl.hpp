@@ -7,6 +7,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace tide::render::gl {
 
@@ -25,6 +26,7 @@ public:
     void set(const char* uniform, float v) const { glUniform1f(location(uniform), v); }
     void set(const char* uniform, const glm::vec2& v) const { glUniform2f(location(uniform), v.x, v.y); }
     void set(const char* uniform, const glm::vec3& v) const { glUniform3f(location(uniform), v.x, v.y, v.z); }
+    void set(const char* uniform, const glm::vec4& v) const { glUniform4f(location(uniform), v.x, v.y, v.z, v.w); }
     void set(const char* uniform, const glm::mat4& m) const;
 
 private:

@@ -211,6 +211,24 @@ struct Renderer::Impl {
         }
     }
 
+    /// An ocean's far field over the coupling zones of the shaded surface in the bound
+    /// framebuffer (FarFieldSea::draw with `zones`), hidden by the solids and by its own waves.
+    void blendZones(const Frame& f, const Camera& camera, const Snapshot& s, const RenderSettings& r) {
+        if (!farField.active()) return;
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        glDepthMask(GL_TRUE);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        drawSolids(f);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glEnable(GL_BLEND);
+        // The frame's alpha stays (1): PNG frames carry it.
+        glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        farField.draw(f, camera, s, waterLook(f, s, r), true);
+        glDisable(GL_BLEND);
+    }
+
     void drawSolids(const Frame& f) {
         if (solidVertices == 0) return;
         solids.use();
@@ -305,6 +323,7 @@ void Renderer::draw(const Snapshot& snapshot, const Camera& camera, const Render
         glClear(GL_DEPTH_BUFFER_BIT);
         d.drawBackground(f, camera, snapshot, settings);
         d.surface.draw(f, d.backgroundColour, framebuffer, std::max(settings.smoothingIterations, 0), settings.foam);
+        d.blendZones(f, camera, snapshot, settings);
     }
     glDisable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

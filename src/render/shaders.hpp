@@ -111,8 +111,11 @@ void main() {
 )";
 
 /// The far field's surface (far_field_sea.hpp): a mesh in world coordinates, shaded as deep
-/// water, fogged towards the horizon, and cut away over the near field, where the particles'
-/// own surface is drawn.
+/// water, fogged towards the horizon. Drawn twice: behind the particles, cut away over the
+/// near field, where their own surface is drawn (uZones 0); then over their shaded surface in
+/// the coupling zones only (uZones 1), opaque at the open faces and fading (smoothstep) to
+/// nothing at the zones' inner edges, as the zones hand the particles from the far field's
+/// motion to their own: no seam at the open faces.
 inline constexpr const char* kFarFieldVertex = R"(
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec3 aNormal;
@@ -131,11 +134,25 @@ uniform vec2 uNearMin;
 uniform vec2 uNearMax;
 uniform float uFogDistance;
 uniform float uSeaDepth;     // still water over the floor, m
+uniform int uZones;          // 0: around the near field; 1: over its coupling zones
+uniform vec4 uOpen;          // 1 where the face is open: -x, +x, -z, +z
+uniform float uZoneWidth;    // m
 in vec3 vPosition;
 in vec3 vNormal;
 out vec4 fragColor;
 void main() {
-    if (all(greaterThan(vPosition.xz, uNearMin)) && all(lessThan(vPosition.xz, uNearMax))) discard;
+    bool inside = all(greaterThan(vPosition.xz, uNearMin)) && all(lessThan(vPosition.xz, uNearMax));
+    float alpha = 1.0;
+    if (uZones == 0) {
+        if (inside) discard;
+    } else {
+        if (!inside) discard;
+        vec4 in_ = vec4(vPosition.x - uNearMin.x, uNearMax.x - vPosition.x, vPosition.z - uNearMin.y, uNearMax.y - vPosition.z);
+        vec4 chi = clamp(1.0 - in_ / uZoneWidth, 0.0, 1.0) * uOpen;  // 1 at an open face, 0 at the zone's inner edge
+        float c = max(max(chi.x, chi.y), max(chi.z, chi.w));
+        alpha = c * c * (3.0 - 2.0 * c);
+        if (alpha <= 0.0) discard;
+    }
     vec3 toEye = uEye - vPosition;
     float distance = length(toEye);
     vec3 v = toEye / distance;
@@ -143,7 +160,7 @@ void main() {
     if (dot(n, v) < 0.0) n = normalize(n - 2.0 * dot(n, v) * v);  // a back-facing slope at grazing view
     float fog = 1.0 - exp(-distance / uFogDistance);
     vec3 water = deepWater(n, v, uSeaDepth / max(v.y, 0.02));
-    fragColor = vec4(mix(water, skyColor(vec3(-v.x, 0.0, -v.z)), fog), 1.0);
+    fragColor = vec4(mix(water, skyColor(vec3(-v.x, 0.0, -v.z)), fog), alpha);
 }
 )";
 
