@@ -84,3 +84,50 @@ TEST(WaveTank2D, IssueFlumeAtDefaultSettingsKeepsItsWave) {
 }
 
 }  // namespace
+
+namespace {
+
+// Issue 42 acceptance 6: Goring's solitary wave (H 0.05 m in d 0.25 m) at 5 particles per
+// height. bench/solitary_wave.cpp gives the whole flume: −3.8 % after 10 depths, celerity
+// −0.5 % (at 10 per height −4.9 % and −0.7 %; at 2.5, −17 % and −2.2 %).
+TEST(WaveTank2D, SolitaryWaveKeepsItsHeightAndCelerityOverTenDepths) {
+    const float d = 0.25f, H = 0.05f, spacing = 0.01f;
+    WaveMakerDef paddle;
+    paddle.type = WaveMakerDef::Type::Solitary;
+    paddle.x = 0.1f;
+    paddle.depth = d;
+    paddle.waveHeight = H;
+    const double g = 9.81, c = std::sqrt(g * (d + H)), kappa = std::sqrt(3.0 * H / (4.0 * d * d * d));
+    const double t0 = (3.8 + H / d) / (kappa * c);
+    // Gauges 2, 4, 5, …, 10 depths past the paddle's end position; the wall 3/κ past the last
+    // (the wave's front is at 1 % of its crest there), so no reflection reaches them first.
+    const float start = paddle.x + static_cast<float>(2.0 * H / (kappa * d));
+    std::vector<float> at{start + 2.0f * d};
+    for (int n = 4; n <= 10; ++n) at.push_back(start + static_cast<float>(n) * d);
+    const float length = spacing * std::ceil((at.back() + 3.0f / static_cast<float>(kappa)) / spacing);
+    World world = scenarios::planarFlume(spacing, length, paddle);
+    std::vector<double> still;
+    for (const float x : at) still.push_back(world.surfaceHeight(x, 0.0f));
+    const double dt = 0.01, end = t0 + (at.back() - paddle.x) / c + 0.4;  // the crest past the last gauge
+    std::vector<waves::Record> records(at.size(), waves::Record{dt, dt, {}});
+    for (int s = 0; s < static_cast<int>(std::lround(end / dt)); ++s) {
+        world.advance(dt);
+        for (std::size_t k = 0; k < at.size(); ++k) records[k].eta.push_back(world.surfaceHeight(at[k], 0.0f) - still[k]);
+    }
+    std::vector<double> x, when;
+    for (std::size_t k = 0; k < at.size(); ++k) {
+        const waves::CrestPassage crest = waves::crestPassage(records[k], records[k].eta.size());
+        std::printf("x = %.3f m: crest %.4f m (%+.1f %%) at %.3f s\n", at[k], crest.height, 100.0 * (crest.height / H - 1.0), crest.time);
+        if (k > 0) x.push_back(at[k]), when.push_back(crest.time);
+        if (k == 0) {
+            EXPECT_NEAR(crest.height, H, 0.05 * H) << "generated";
+        } else if (k + 1 == at.size()) {
+            EXPECT_NEAR(crest.height, H, 0.05 * H) << "after 10 depths";
+        }
+    }
+    const double celerity = waves::celerity(x, when);
+    std::printf("celerity %.4f m/s against sqrt(g(d + H)) %.4f (%+.2f %%)\n", celerity, c, 100.0 * (celerity / c - 1.0));
+    EXPECT_NEAR(celerity, c, 0.02 * c);
+}
+
+}  // namespace

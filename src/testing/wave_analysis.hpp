@@ -34,6 +34,34 @@ inline Record window(const Record& r, double from, double to) {
     return out;
 }
 
+/// A single crest's passage at a gauge (a solitary wave's): its height, the highest sample
+/// before `last`, and its time, the centroid in time of η² over the samples around it above
+/// half that height (less noisy than the highest sample's time).
+struct CrestPassage {
+    double height = 0.0, time = 0.0;
+};
+inline CrestPassage crestPassage(const Record& r, std::size_t last) {
+    last = std::min(last, r.eta.size());
+    if (last == 0) return {};
+    const auto top = static_cast<std::size_t>(std::max_element(r.eta.begin(), r.eta.begin() + static_cast<std::ptrdiff_t>(last)) -
+                                              r.eta.begin());
+    const double crest = r.eta[top];
+    std::size_t a = top, b = top;
+    while (a > 0 && r.eta[a - 1] > 0.5 * crest) --a;
+    while (b + 1 < last && r.eta[b + 1] > 0.5 * crest) ++b;
+    double w = 0.0, wt = 0.0;
+    for (std::size_t k = a; k <= b; ++k) w += r.eta[k] * r.eta[k], wt += r.eta[k] * r.eta[k] * r.time(k);
+    return {crest, w > 0.0 ? wt / w : r.time(top)};
+}
+
+/// The least-squares slope of x against t: a celerity from arrival times at gauges.
+inline double celerity(const std::vector<double>& x, const std::vector<double>& t) {
+    double st = 0.0, sx = 0.0, stt = 0.0, stx = 0.0;
+    const auto n = static_cast<double>(x.size());
+    for (std::size_t k = 0; k < x.size(); ++k) st += t[k], sx += x[k], stt += t[k] * t[k], stx += t[k] * x[k];
+    return (n * stx - st * sx) / (n * stt - st * st);
+}
+
 inline double mean(const Record& r) {
     double sum = 0.0;
     for (const double e : r.eta) sum += e;
