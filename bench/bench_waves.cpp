@@ -9,7 +9,7 @@
 //   tide_wave_bench [--spacing S] [--seconds T] [--threads N] [--csv FILE] [--reach W]
 //                   [--solver NAME] [--viscosity NAME] [--mu X] [--xsph E] [--momentum M] [--shifting A]
 //                   [--difference-form C] [--max-dt S]
-//                   [--max-density-error E] [--max-iterations N] [--support-ratio R]
+//                   [--max-density-error E] [--max-iterations N] [--support-ratio R] [--dimensions 2|3]
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -32,7 +32,7 @@
 namespace {
 
 int runFlume(float spacing, double seconds, int threads, int reach, const std::string& csv, const tide::SolverDef& solver,
-             const tide::MaterialDef& water, float supportRatio) {
+             const tide::MaterialDef& water, float supportRatio, int dimensions) {
     const double T = 1.0, d = 0.3, H = 0.04;
     const double omega = 2.0 * std::numbers::pi / T;
     const double k = tide::waves::waveNumber(omega, d), lambda = 2.0 * std::numbers::pi / k;
@@ -49,18 +49,22 @@ int runFlume(float spacing, double seconds, int threads, int reach, const std::s
         spacing * std::ceil(static_cast<float>(paddle.x + (reach + 2.0) * lambda + 1.5 * lambda) / spacing);
     // Long enough for the front at the farthest gauge plus six whole periods (a ramp and a margin).
     if (seconds <= 0.0) seconds = paddle.rampTime + reach * lambda / cg + 8.0 * T;
-    tide::World world = tide::scenarios::waveFlume(spacing, length, paddle.depth, paddle, static_cast<float>(1.5 * lambda),
-                                                   threads, tide::scenarios::periodicWidthInSpacings(supportRatio), solver,
-                                                   supportRatio, water);
+    tide::World world = dimensions == 2
+                            ? tide::scenarios::planarFlume(spacing, length, paddle, static_cast<float>(1.5 * lambda), threads, solver)
+                            : tide::scenarios::waveFlume(spacing, length, paddle.depth, paddle, static_cast<float>(1.5 * lambda),
+                                                         threads, tide::scenarios::periodicWidthInSpacings(supportRatio), solver,
+                                                         supportRatio, water);
+    const tide::SolverDef& used = world.def().solver;
     std::vector<double> at;
     for (int g = 1; g <= reach; g += 2) at.push_back(g);
     std::vector<tide::waves::Record> records(at.size(), tide::waves::Record{0.02, 0.02, {}});
-    std::printf("flume %.2f m, %u particles, spacing %.4f m (%.1f per wave height), lambda %.3f m, %.1f s\n", length,
+    std::printf("%dD flume %.2f m, %u particles, spacing %.4f m (%.1f per wave height), lambda %.3f m, %.1f s\n", dimensions, length,
                 world.particles().size(), spacing, H / spacing, lambda, seconds);
     std::printf("%s, viscosity %s, mu %g Pa s, xsph %g, momentum %g, shifting %g, difference form %g, max_dt %g s, max_density_error %g, "
                 "max_iterations %d, support ratio %g\n",
-                solver.method.c_str(), solver.viscosity.empty() ? "(solver's own)" : solver.viscosity.c_str(), water.viscosity, solver.xsph,
-                solver.momentum, solver.shifting, solver.differenceForm, solver.maxDt, solver.maxDensityError, solver.maxIterations, supportRatio);
+                used.method.c_str(), used.viscosity.empty() ? "(solver's own)" : used.viscosity.c_str(), water.viscosity, used.xsph,
+                used.momentum, used.shifting, used.differenceForm, used.maxDt, used.maxDensityError, used.maxIterations,
+                world.def().supportRatio);
     std::fflush(stdout);
     const auto start = std::chrono::steady_clock::now();
     const float z = 0.5f * world.def().domainMax.z;
@@ -150,10 +154,21 @@ int main(int argc, char** argv) {
     app.add_option("--max-iterations", solver.maxIterations, "solver.max_iterations (the density solve's cap)")
         ->capture_default_str()->check(CLI::Range(1, 100000));
     app.add_option("--support-ratio", supportRatio, "kernel support / spacing (default: the kernel's own)")->check(CLI::Range(1.0, 4.0));
+    int dimensions = 3;
+    app.add_option("--dimensions", dimensions, "2: the planar flume (the 2D wave defaults: difference form off unless given); 3: the slab")
+        ->capture_default_str()
+        ->check(CLI::IsMember({2, 3}));
     CLI11_PARSE(app, argc, argv);
+    if (dimensions == 2) {
+        if (app.count("--mu") || app.count("--support-ratio")) {
+            std::fprintf(stderr, "tide_wave_bench: --mu and --support-ratio are for the 3D slab (--dimensions 3)\n");
+            return 1;
+        }
+        if (!app.count("--difference-form")) solver.differenceForm = -1.0f;  // the 2D wave default (off)
+    }
     supportRatio = tide::scenarios::resolvedSupportRatio(solver, supportRatio);
     try {
-        return runFlume(spacing, seconds, threads, reach, csv, solver, water, supportRatio);
+        return runFlume(spacing, seconds, threads, reach, csv, solver, water, supportRatio, dimensions);
     } catch (const std::exception& e) {  // a bad --viscosity, a diverging flume
         std::fprintf(stderr, "tide_wave_bench: %s\n", e.what());
         return 1;
