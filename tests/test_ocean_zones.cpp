@@ -392,7 +392,7 @@ TEST(OceanZones, DISABLED_IrregularSeaMatchesTheFarFieldAtTheCentre) {
     OceanDef o;
     o.depth = 0.7;
     o.waves.type = OceanWavesDef::Type::Jonswap;
-    o.waves.hs = 0.1;
+    o.waves.hs = envOr("TIDE_ZONE_HS", 0.1);
     o.waves.tp = 3.0;
     o.waves.gamma = 3.3;
     o.waves.seed = static_cast<std::uint64_t>(envOr("TIDE_ZONE_SEED", 1));
