@@ -19,8 +19,6 @@
 #include <nlohmann/json.hpp>
 
 #include <tide/io/checkpoint.hpp>
-#include <glm/geometric.hpp>
-
 #include <tide/io/exporters.hpp>
 #include <tide/io/scene.hpp>
 
@@ -187,14 +185,7 @@ std::string pvtuName(int frame) {
 std::optional<io::FarFieldMeshDef> farFieldMesh(const io::Scene& scene) {
     const bool obj = std::find(scene.output.formats.begin(), scene.output.formats.end(), io::Format::Obj) != scene.output.formats.end();
     if (!obj || !scene.ocean || !scene.output.farField || scene.world.dimensions != 3) return std::nullopt;
-    io::FarFieldMeshDef far;
-    far.ocean = *scene.ocean;
-    far.gravity = glm::length(scene.world.gravity);
-    far.nearMin = scene.world.domainMin;
-    far.nearMax = scene.world.domainMax;
-    far.extent = scene.output.farFieldExtent > 0.0 ? scene.output.farFieldExtent : io::defaultFarFieldExtent(far.ocean, far.gravity);
-    far.spacing = scene.output.farFieldSpacing > 0.0 ? scene.output.farFieldSpacing : io::defaultFarFieldSpacing(far.ocean, far.gravity);
-    return far;
+    return io::farFieldMeshFor(*scene.ocean, scene.world, scene.output.farFieldExtent, scene.output.farFieldSpacing);
 }
 
 /// A split run's frame: every rank's own particles gathered on rank 0, which writes the file

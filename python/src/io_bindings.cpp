@@ -4,6 +4,7 @@
 #include <pybind11/stl/filesystem.h>
 
 #include <tide/io/exporters.hpp>
+#include <tide/io/far_field_mesh.hpp>
 
 #include "bindings.hpp"
 
@@ -18,7 +19,13 @@ void bindIo(py::module_& m) {
             const auto f = tide::io::parseFormat(format);
             if (!f) throw py::value_error("format: must be \"vtu\", \"ply\", \"csv\" or \"obj\", got \"" + format + "\"");
             const World& w = worldOf(world);
-            const tide::io::SurfaceMeshDef surface{w.def().particleSpacing, materialNames, w.threads()};
+            tide::io::SurfaceMeshDef surface{w.def().particleSpacing, materialNames, w.threads(), {}};
+            // An ocean's obj frame carries the far field around the domain, as `tide run` writes it.
+            if (const auto ocean = w.ocean(); ocean && w.def().dimensions == 3) {
+                surface.farField = tide::io::farFieldMeshFor(*ocean, w.def());
+                surface.farField->time = w.time();
+                surface.farField->ramp = w.oceanRamp();
+            }
             py::gil_scoped_release nogil;
             tide::io::writeFrame(path, *f, w.particles(), surface);
         },

@@ -239,6 +239,17 @@ def test_write_frame_in_every_format_the_cli_writes(tmp_path):
         tide.io.write_frame(world, tmp_path / "f.xyz")
 
 
+def test_an_oceans_obj_frame_carries_the_far_field(tmp_path):
+    ocean = {"depth": 0.15, "waves": {"type": "regular", "height": 0.02, "period": 1.0},
+             "zone_width": 0.2, "open_sides": ["-x", "+x", "-z", "+z"]}
+    world = tide.World(small_tank(domain={"min": [0, 0, 0], "max": [0.6, 0.3, 0.6]}, blocks=[], ocean=ocean))
+    tide.io.write_frame(world, tmp_path / "f.obj", "obj")
+    text = (tmp_path / "f.obj").read_text()
+    assert "o water" in text and "o far_field" in text
+    far = text[text.index("o far_field"):]
+    assert far.count("\nf ") > 100
+
+
 def test_stats_are_a_dict():
     world = tide.World(small_tank())
     world.advance(0.02)

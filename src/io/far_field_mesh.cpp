@@ -8,6 +8,7 @@
 #include <thread>
 #include <vector>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
 #include "ocean/sea.hpp"
@@ -18,6 +19,17 @@ namespace tide::io {
 double defaultFarFieldExtent(const OceanDef& ocean, double gravity) { return 2.0 * oceanPeakWavelength(ocean, gravity); }
 
 double defaultFarFieldSpacing(const OceanDef& ocean, double gravity) { return oceanPeakWavelength(ocean, gravity) / 16.0; }
+
+FarFieldMeshDef farFieldMeshFor(const OceanDef& ocean, const WorldDef& world, double extent, double spacing) {
+    FarFieldMeshDef far;
+    far.ocean = ocean;
+    far.gravity = glm::length(world.gravity);
+    far.nearMin = world.domainMin;
+    far.nearMax = world.domainMax;
+    far.extent = extent > 0.0 ? extent : defaultFarFieldExtent(ocean, far.gravity);
+    far.spacing = spacing > 0.0 ? spacing : defaultFarFieldSpacing(ocean, far.gravity);
+    return far;
+}
 
 namespace {
 

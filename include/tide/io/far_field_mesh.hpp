@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <tide/defs.hpp>
 #include <tide/ocean.hpp>
 
 namespace tide::io {
@@ -32,6 +33,12 @@ struct FarFieldMeshDef {
 [[nodiscard]] double defaultFarFieldExtent(const OceanDef& ocean, double gravity);
 /// The default spacing of its points: a sixteenth of the peak wavelength, m.
 [[nodiscard]] double defaultFarFieldSpacing(const OceanDef& ocean, double gravity);
+
+/// The far field's mesh of an ocean over the near field `world` (its domain and gravity), at
+/// time 0 and full ramp (set `time` and `ramp` per frame); `extent` and `spacing` ≤ 0 take the
+/// defaults.
+[[nodiscard]] FarFieldMeshDef farFieldMeshFor(const OceanDef& ocean, const WorldDef& world, double extent = 0.0,
+                                              double spacing = 0.0);
 
 /// Appends the object "far_field" to `mesh`: a grid whose lines fall on the near field's edges,
 /// every cell outside the near field's rectangle, triangles facing up. The points on the hole's
