@@ -2,7 +2,9 @@
 #include <tide/io/far_field_mesh.hpp>
 #include <tide/io/surface_mesh.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -70,17 +72,23 @@ void appendFarField(SurfaceMesh& mesh, const FarFieldMeshDef& def) {
     if (static_cast<double>(nx) * static_cast<double>(nz) > 16e6)
         fail("spacing", def.spacing, "makes a far-field mesh of more than 16 million points; take a larger one");
 
-    // Points i (along x) and j (along z); the hole's edge is the ring of lines first..last.
+    // Points i (along x) and j (along z). Those strictly inside the hole belong to no triangle
+    // and are neither sampled nor written; those on its edge (the ring of lines first..last)
+    // are sampled without the choppy shift.
+    auto inHole = [&](std::size_t i, std::size_t j) { return i > ax.first && i < ax.last && j > az.first && j < az.last; };
     auto onRing = [&](std::size_t i, std::size_t j) {
         const bool inX = i >= ax.first && i <= ax.last, inZ = j >= az.first && j <= az.last;
         return inX && inZ && (i == ax.first || i == ax.last || j == az.first || j == az.last);
     };
-    std::vector<glm::dvec2> rest(nx * nz), ringRest;
-    std::vector<std::size_t> ringIndex;
+    std::vector<glm::dvec2> rest, ringRest;
+    std::vector<std::uint32_t> index(nx * nz), ringVertex;
+    const auto base = static_cast<std::uint32_t>(mesh.vertices.size());
     for (std::size_t j = 0; j < nz; ++j)
         for (std::size_t i = 0; i < nx; ++i) {
-            rest[j * nx + i] = {ax.lines[i], az.lines[j]};
-            if (onRing(i, j)) ringIndex.push_back(j * nx + i), ringRest.push_back(rest[j * nx + i]);
+            if (inHole(i, j)) continue;
+            index[j * nx + i] = base + static_cast<std::uint32_t>(rest.size());
+            if (onRing(i, j)) ringVertex.push_back(static_cast<std::uint32_t>(rest.size())), ringRest.emplace_back(ax.lines[i], az.lines[j]);
+            rest.emplace_back(ax.lines[i], az.lines[j]);
         }
     const double cell = std::max(ax.lines[1] - ax.lines[0], az.lines[1] - az.lines[0]);
     const ocean::Sea sea = ocean::Sea::fromDef(def.ocean, def.gravity);
@@ -93,21 +101,13 @@ void appendFarField(SurfaceMesh& mesh, const FarFieldMeshDef& def) {
     ocean::sampleSurface(sea, rest, std::vector<float>(rest.size(), static_cast<float>(cell)), sampling, points, threads);
     sampling.choppy = false;
     ocean::sampleSurface(sea, ringRest, std::vector<float>(ringRest.size(), static_cast<float>(cell)), sampling, ring, threads);
-    for (std::size_t r = 0; r < ringIndex.size(); ++r) points[ringIndex[r]] = ring[r];
+    for (std::size_t r = 0; r < ringVertex.size(); ++r) points[ringVertex[r]] = ring[r];
 
     SurfaceMesh::Object object;
     object.name = "far_field";
     object.material = 0;  // the ocean's water: the scene's first material
     object.firstTriangle = mesh.triangles.size();
-    // The points strictly inside the hole belong to no triangle: not written.
-    auto inHole = [&](std::size_t i, std::size_t j) { return i > ax.first && i < ax.last && j > az.first && j < az.last; };
-    std::vector<std::uint32_t> index(points.size());
-    for (std::size_t j = 0; j < nz; ++j)
-        for (std::size_t i = 0; i < nx; ++i) {
-            if (inHole(i, j)) continue;
-            index[j * nx + i] = static_cast<std::uint32_t>(mesh.vertices.size());
-            mesh.vertices.push_back(points[j * nx + i].position);
-        }
+    for (const ocean::SurfacePoint& p : points) mesh.vertices.push_back(p.position);
     auto at = [&](std::size_t i, std::size_t j) { return index[j * nx + i]; };
     for (std::size_t j = 0; j + 1 < nz; ++j)
         for (std::size_t i = 0; i + 1 < nx; ++i) {
