@@ -100,6 +100,9 @@ TEST(FarFieldMesh, FollowsTheRampAndRefusesBadSizesNamingThem) {
     bad = farField();
     bad.spacing = 1e-4;  // 10⁸ points
     refused(bad, "output.far_field.spacing");
+    bad = farField();
+    bad.extent = 1e30;  // more cells than a size_t holds
+    refused(bad, "output.far_field.extent");
 }
 
 TEST(FarFieldMesh, TheDefaultsFollowThePeakWavelength) {

@@ -42,11 +42,20 @@ struct Axis {
     std::size_t first = 0, last = 0;  ///< the indices of the lines at lo and hi
 };
 
+/// The most points along one axis (16 million in all at most, a grid of 4000 × 4000).
+constexpr double kMostLines = 4000.0;
+
+void fail(const std::string& field, double value, const std::string& why);
+
 Axis axisThrough(double lo, double hi, double extent, double spacing) {
     const double width = hi - lo;
-    const auto inside = static_cast<std::size_t>(std::max(1.0, std::ceil(width / spacing - 1e-9)));
-    const double step = width > 0.0 ? width / static_cast<double>(inside) : spacing;
-    const auto outside = static_cast<std::size_t>(std::ceil(extent / step - 1e-9));
+    const double insideCells = std::max(1.0, std::ceil(width / spacing - 1e-9));
+    if (!(insideCells < kMostLines)) fail("spacing", spacing, "makes a far-field mesh of more than 16 million points; take a larger one");
+    const double step = width > 0.0 ? width / insideCells : spacing;
+    const double outsideCells = std::ceil(extent / step - 1e-9);
+    if (!(insideCells + 2.0 * outsideCells < kMostLines))
+        fail("extent", extent, "makes a far-field mesh of more than 16 million points at this spacing; take a smaller one");
+    const auto inside = static_cast<std::size_t>(insideCells), outside = static_cast<std::size_t>(outsideCells);
     Axis a;
     a.first = outside;
     a.last = outside + inside;
@@ -69,8 +78,6 @@ void appendFarField(SurfaceMesh& mesh, const FarFieldMeshDef& def) {
     const Axis ax = axisThrough(def.nearMin.x, def.nearMax.x, def.extent, def.spacing);
     const Axis az = axisThrough(def.nearMin.z, def.nearMax.z, def.extent, def.spacing);
     const std::size_t nx = ax.lines.size(), nz = az.lines.size();
-    if (static_cast<double>(nx) * static_cast<double>(nz) > 16e6)
-        fail("spacing", def.spacing, "makes a far-field mesh of more than 16 million points; take a larger one");
 
     // Points i (along x) and j (along z). Those strictly inside the hole belong to no triangle
     // and are neither sampled nor written; those on its edge (the ring of lines first..last)

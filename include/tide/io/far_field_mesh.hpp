@@ -44,7 +44,7 @@ struct FarFieldMeshDef {
 /// every cell outside the near field's rectangle, triangles facing up. The points on the hole's
 /// edge keep their x and z (no choppy shift), so the mesh meets the particles' surface there.
 /// Throws std::invalid_argument naming the field if extent or spacing is not positive, or the
-/// grid would exceed 16 million points.
+/// grid would exceed 4000 points along an axis (16 million in all).
 void appendFarField(SurfaceMesh& mesh, const FarFieldMeshDef& def);
 
 }  // namespace tide::io
