@@ -35,6 +35,12 @@ FarFieldMeshDef farFieldMeshFor(const OceanDef& ocean, const WorldDef& world, do
 
 namespace {
 
+void fail(const std::string& field, double value, const std::string& why) {
+    std::ostringstream msg;
+    msg << "output.far_field." << field << ": " << why << ", got " << value;
+    throw std::invalid_argument(msg.str());
+}
+
 /// Grid lines along one axis: the near field's [lo, hi] cut into equal cells no longer than
 /// `spacing`, continued by cells of the same length for at least `extent` on both sides.
 struct Axis {
@@ -44,8 +50,6 @@ struct Axis {
 
 /// The most points along one axis (16 million in all at most, a grid of 4000 × 4000).
 constexpr double kMostLines = 4000.0;
-
-void fail(const std::string& field, double value, const std::string& why);
 
 Axis axisThrough(double lo, double hi, double extent, double spacing) {
     const double width = hi - lo;
@@ -62,12 +66,6 @@ Axis axisThrough(double lo, double hi, double extent, double spacing) {
     for (std::size_t i = 0; i <= inside + 2 * outside; ++i)
         a.lines.push_back(lo + (static_cast<double>(i) - static_cast<double>(outside)) * step);
     return a;
-}
-
-void fail(const std::string& field, double value, const std::string& why) {
-    std::ostringstream msg;
-    msg << "output.far_field." << field << ": " << why << ", got " << value;
-    throw std::invalid_argument(msg.str());
 }
 
 }  // namespace
