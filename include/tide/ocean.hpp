@@ -70,6 +70,12 @@ double oceanPeakWavelength(const OceanDef& def, double g = 9.81);
 /// The coupling zones' width: `zoneWidth`, or one peak wavelength when it is 0, m.
 double oceanZoneWidth(const OceanDef& def, double g = 9.81);
 
+/// How far above still water the sea's crests may reach, m: H for regular waves (a steep or
+/// shallow-water wave's crest stands up to ~0.8 H above it), Hs for a spectrum (the highest of
+/// a thousand Rayleigh-distributed crests is ~0.93 Hs, √(2 ln N)/4 Hs; Longuet-Higgins 1952).
+/// A domain whose top is lower puts a lid on the waves (World::setOcean refuses it).
+double oceanCrestHeight(const OceanDef& def);
+
 /// The scene key of a side: "-x", "+x", "-z", "+z".
 const char* oceanSideName(OceanSide side);
 

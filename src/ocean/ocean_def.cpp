@@ -89,6 +89,10 @@ double oceanZoneWidth(const OceanDef& def, double g) {
     return def.zoneWidth > 0.0 ? def.zoneWidth : oceanPeakWavelength(def, g);
 }
 
+double oceanCrestHeight(const OceanDef& def) {
+    return def.waves.type == OceanWavesDef::Type::Regular ? def.waves.height : def.waves.hs;
+}
+
 const char* oceanSideName(OceanSide side) {
     switch (side) {
         case OceanSide::MinusX: return "-x";
