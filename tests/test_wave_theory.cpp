@@ -301,4 +301,29 @@ TEST(WaveMakerInput, WavesTheTankOrTheSpacingCannotHoldAreRefusedByFieldAndValue
     EXPECT_EQ(refusal(def), "");
 }
 
+/// The message of checkRoomAboveWaves, or "" if the crests have room.
+std::string lidRefusal(const WaveMakerDef& def, double headroom) {
+    try {
+        checkRoomAboveWaves(def, headroom);
+    } catch (const std::invalid_argument& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(WaveMakerInput, ADomainTopUnderTheCrestsIsRefused) {
+    WaveMakerDef def;
+    def.depth = 0.25f;
+    def.waveHeight = 0.03f;
+    def.period = 1.2f;
+    EXPECT_EQ(lidRefusal(def, 0.03), "");
+    EXPECT_EQ(lidRefusal(def, 0.02), "domain.max[1]: the domain's top stands 0.02 m above the wave maker's still water, "
+                                     "under its crests (about 0.03 m: wave_height); raise it by 0.01 m or more");
+    def.spectrum.type = WaveSpectrumDef::Type::Jonswap;  // a spectrum: Hs
+    def.spectrum.significantHeight = 0.05f;
+    def.spectrum.peakPeriod = 1.2f;
+    EXPECT_NE(lidRefusal(def, 0.04).find("(about 0.05 m: spectrum.hs)"), std::string::npos) << lidRefusal(def, 0.04);
+    EXPECT_EQ(lidRefusal(def, 0.05), "");
+}
+
 }  // namespace

@@ -387,6 +387,7 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     const float g = glm::length(d.gravity);
     if (!(g > 0.0f)) throw std::invalid_argument("wavemaker: needs gravity, got " + show(d.gravity));
     checkWaveFitsTank(def, d.domainMax.x - def.x, d.particleSpacing, g);
+    checkRoomAboveWaves(def, static_cast<double>(d.domainMax.y - d.domainMin.y) - def.depth);
     WaveMaker maker(def, d.domainMin.y, g);
     // A wave tank's numerics unless the scene chose its own (docs/waves.md § Defaults).
     applyWaveNumerics(w.def.solver, w.def.dimensions);

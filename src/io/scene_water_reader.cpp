@@ -120,6 +120,7 @@ void readWaveMaker(Reader& r, const json& j, Scene& scene, float scale, bool dom
         // `tide validate` does): the check's message starts with the field.
         try {
             checkWaveFitsTank(w, world.domainMax.x - w.x, world.particleSpacing, glm::length(world.gravity));
+            checkRoomAboveWaves(w, static_cast<double>(world.domainMax.y - world.domainMin.y) - w.depth);
         } catch (const std::invalid_argument& e) {
             const std::string message = e.what();
             const std::size_t colon = message.find(": ");

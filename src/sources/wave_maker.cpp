@@ -68,6 +68,16 @@ void checkWaveFitsTank(const WaveMakerDef& def, float length, float spacing, dou
                                     " m), got " + show(height));
 }
 
+void checkRoomAboveWaves(const WaveMakerDef& def, double headroom) {
+    const bool spectrum = def.type != WaveMakerDef::Type::Solitary && def.spectrum.type != WaveSpectrumDef::Type::None;
+    const double crest = spectrum ? def.spectrum.significantHeight : def.waveHeight;
+    if (headroom < crest - 1e-6)  // (the domain is in float)
+        throw std::invalid_argument("domain.max[1]: the domain's top stands " + show(headroom) +
+                                    " m above the wave maker's still water, under its crests (about " + show(crest) +
+                                    " m: " + (spectrum ? "spectrum.hs" : "wave_height") + "); raise it by " +
+                                    show(crest - headroom) + " m or more");
+}
+
 WaveMaker::WaveMaker(const WaveMakerDef& def, float floor, double g)
     : def_(def), hinge_(def.x, floor, 0.0f), components_(waves::paddleComponents(def, g)) {
     if (def.type == WaveMakerDef::Type::Solitary) solitary_.emplace(def.waveHeight, def.depth, g);

@@ -40,6 +40,11 @@ namespace tide {
 /// only the piston's regular waves have it.
 void checkWaveFitsTank(const WaveMakerDef& def, float length, float spacing, double g);
 
+/// Throws std::invalid_argument naming domain.max[1] when the domain's top stands less than
+/// the waves' crest height (wave_height, or spectrum.hs) above the paddle's still water
+/// (`headroom`, m): a lid that clips every crest (the ocean's check, World::setOcean).
+void checkRoomAboveWaves(const WaveMakerDef& def, double headroom);
+
 /// Fewest particle spacings a wave length may span, and a wave height.
 inline constexpr double kMinSpacingsPerWave = 10.0;
 inline constexpr double kMinSpacingsPerHeight = 0.5;
