@@ -59,11 +59,17 @@ RelaxationZones::RelaxationZones(const OceanDef& def, const NearField& near, dou
     // (ocean_pile's sea: velocity error 4.4 % with levels a step apart, 1.9 % at half a step).
     spec.levels = std::max(2, static_cast<int>(std::ceil(2.0 * def.depth / spec.step)));
     spec.used.assign(static_cast<std::size_t>(spec.columnsX) * static_cast<std::size_t>(spec.columnsZ), 0);
+    // In 2D the particles lie on the plane z = min.z, on the row of columns kMargin steps in,
+    // where the stencil's weights across are (0, 1, 0, 0): only that row is evaluated (the
+    // others read as still water with weight 0), a seventh of the sums and a quarter of each
+    // particle's stencil (a 2D flume's coupling was 13 % of its step, SeaLattice::velocity 7 %).
+    const bool planar = !(near.max.z > near.min.z);
     for (int j = 0; j < spec.columnsZ; ++j)
         for (int i = 0; i < spec.columnsX; ++i) {
             const glm::vec3 x(spec.origin.x + i * spec.step, near.min.y, spec.origin.y + j * spec.step);
+            const bool reached = !planar || j == kMargin;
             spec.used[static_cast<std::size_t>(j) * static_cast<std::size_t>(spec.columnsX) + static_cast<std::size_t>(i)] =
-                distanceToOpenFace(x) < width_ + kMargin * spec.step ? 1 : 0;
+                reached && distanceToOpenFace(x) < width_ + kMargin * spec.step ? 1 : 0;
         }
     // Knots of the lattice in time an eighth of the shortest component's period apart: the
     // Hermite blend's error is (ω Δt)⁴/384 ≈ 1e-3 of that component (far less at the peak).
