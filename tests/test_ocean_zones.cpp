@@ -126,9 +126,7 @@ LatticeError latticeError(const ocean::Sea& sea, double step, bool blended = fal
     spec.columnsX = spec.columnsZ = static_cast<int>(std::ceil(1.0 / step)) + 7;
     spec.levels = static_cast<int>(std::ceil(2.0 * d / step));  // as RelaxationZones: half a step apart
     ocean::SeaLattice lattice(sea, spec), before(sea, spec), after(sea, spec);
-    double fastest = 0.0;
-    for (const ocean::WaveComponent& c : sea.components()) fastest = std::max(fastest, c.omega);
-    const double knot = 2.0 * std::numbers::pi / fastest / ocean::kKnotsPerPeriod;
+    const double knot = ocean::knotStep(sea);
     double etaErr = 0.0, etaSq = 0.0, uErr = 0.0, uSq = 0.0;
     for (const double t : {3.1, 7.45}) {
         if (blended) {
@@ -181,6 +179,10 @@ TEST(OceanZones, TheLatticeHoldsTheDirectSumsWhereParticlesReadIt) {
             EXPECT_LT(e.velocity, 0.025);
         }
     }
+    double fastest = 0.0;
+    for (const ocean::WaveComponent& c : sea.components()) fastest = std::max(fastest, c.omega);
+    std::printf("knots every %.4f s: %.2f a period of the shortest component, %.1f of the peak's\n", ocean::knotStep(sea),
+                2.0 * std::numbers::pi / fastest / ocean::knotStep(sea), pile.waves.tp / ocean::knotStep(sea));
     // Blended in time halfway between knots (the worst place): hardly more.
     const LatticeError b = latticeError(sea, ocean::kLatticeSpacings * 0.04, true);
     std::printf("the same, blended halfway between knots: RMS error eta %.2e, velocity %.2e\n", b.elevation, b.velocity);

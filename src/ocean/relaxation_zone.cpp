@@ -6,7 +6,6 @@
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
-#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -71,14 +70,21 @@ RelaxationZones::RelaxationZones(const OceanDef& def, const NearField& near, dou
             spec.used[static_cast<std::size_t>(j) * static_cast<std::size_t>(spec.columnsX) + static_cast<std::size_t>(i)] =
                 reached && distanceToOpenFace(x) < width_ + kMargin * spec.step ? 1 : 0;
         }
-    // Knots of the lattice in time an eighth of the shortest component's period apart: the
-    // Hermite blend's error is (ω Δt)⁴/384 ≈ 1e-3 of that component (far less at the peak).
-    double fastest = 0.0;
-    for (const WaveComponent& c : sea_.components()) fastest = std::max(fastest, c.omega);
-    knotStep_ = fastest > 0.0 ? 2.0 * std::numbers::pi / fastest / kKnotsPerPeriod : 1.0;
+    knotStep_ = knotStep(sea_);
     knots_.emplace_back(sea_, spec);
     knots_.emplace_back(sea_, spec);
     lattice_.emplace(sea_, std::move(spec));
+}
+
+double knotStep(const Sea& sea) {
+    double largest = 0.0;
+    for (const WaveComponent& c : sea.components()) largest = std::max(largest, c.amplitude);
+    // a (ω Δ)⁴ ≤ a_max (2π/kKnotsPerPeriod)⁴ for every component.
+    const double reach = 2.0 * std::numbers::pi / kKnotsPerPeriod;
+    double step = std::numeric_limits<double>::infinity();
+    for (const WaveComponent& c : sea.components())
+        if (c.amplitude > 0.0 && c.omega > 0.0) step = std::min(step, reach * std::pow(largest / c.amplitude, 0.25) / c.omega);
+    return std::isfinite(step) ? step : 1.0;
 }
 
 double RelaxationZones::ramp(double t) const {
@@ -215,73 +221,104 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
     const SeaLattice* field = r == 0.0 ? nullptr : &lattice(t, threads);
     const double s = near_.spacing;
     const double strip = kStripSpacings * s;
-    // The particles near the strips, binned in cells of one spacing.
-    const auto cellOf = [&](const glm::dvec3& x) {
-        const auto c = glm::floor(x / s);
-        return (static_cast<std::int64_t>(c.x) & 0x1fffff) | (static_cast<std::int64_t>(c.y) & 0x1fffff) << 21 |
-               (static_cast<std::int64_t>(c.z) & 0x1fffff) << 42;
-    };
-    // Sorted by cell (a vector, not a map of vectors: this runs every step); the particles
-    // added here go to a map, few after the ramp.
-    binned_.clear();
-    for (std::uint32_t i = 0; i < particles.size(); ++i)
-        if (distanceToOpenFace(particles.position[i]) < strip + 2.0 * s)
-            binned_.emplace_back(cellOf(glm::dvec3(particles.position[i])), particles.position[i]);
-    std::sort(binned_.begin(), binned_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    std::unordered_map<std::int64_t, std::vector<glm::vec3>> addedCells;
-    const auto occupied = [&](const glm::dvec3& x) {
-        const double r2 = kRoomSpacings * kRoomSpacings * s * s;
-        const auto near = [&](const glm::vec3& p) {
-            const glm::dvec3 d = glm::dvec3(p) - x;
-            return glm::dot(d, d) < r2;
-        };
-        // The point's own cell first: where water is, its particle is usually there.
-        for (int n = 0; n < 27; ++n) {
-            const int m = (n + 13) % 27;  // 13: the middle cell
-            const std::int64_t key = cellOf(x + s * glm::dvec3(m % 3 - 1, m / 3 % 3 - 1, m / 9 - 1));
-            auto at = std::lower_bound(binned_.begin(), binned_.end(), key,
-                                       [](const auto& entry, std::int64_t k) { return entry.first < k; });
-            for (; at != binned_.end() && at->first == key; ++at)
-                if (near(at->second)) return true;
-            if (addedCells.empty()) continue;
-            const auto found = addedCells.find(key);
-            if (found != addedCells.end())
-                for (const glm::vec3& p : found->second)
-                    if (near(p)) return true;
-        }
-        return false;
-    };
     // Lattice indices k with origin + (k + ½)s in [lo, hi].
     const auto range = [&](int axis, double lo, double hi) {
         const double o = near_.latticeOrigin[axis];
         return std::pair<long, long>{static_cast<long>(std::ceil((lo - o) / s - 0.5 - 1e-6)),
                                      static_cast<long>(std::floor((hi - o) / s - 0.5 + 1e-6))};
     };
-    std::uint32_t added = 0;
-    std::uint64_t visited = 0;  // lattice points under the surface so far, on every rank alike
+    // Each side's strip of lattice points (along its axis, across it, up) and which of them
+    // have a particle within kRoomSpacings: every particle near a strip marks the few points
+    // within reach (a sort of those particles by cell each step was 2 % of an ocean's step).
+    // The points added below are a spacing apart, so they never take one another's room;
+    // where two strips meet (a corner) a point added by one is marked taken in the other.
+    struct Strip {
+        int axis, other;
+        std::pair<long, long> along, across, up;
+        [[nodiscard]] std::size_t count() const {
+            return static_cast<std::size_t>(std::max(0L, along.second - along.first + 1)) *
+                   static_cast<std::size_t>(std::max(0L, across.second - across.first + 1)) *
+                   static_cast<std::size_t>(std::max(0L, up.second - up.first + 1));
+        }
+        [[nodiscard]] std::size_t index(long a, long c, long k) const {
+            return (static_cast<std::size_t>(a - along.first) * static_cast<std::size_t>(across.second - across.first + 1) +
+                    static_cast<std::size_t>(c - across.first)) *
+                       static_cast<std::size_t>(up.second - up.first + 1) +
+                   static_cast<std::size_t>(k - up.first);
+        }
+    };
+    std::vector<Strip> strips;
     for (const OceanSide side : sides_) {
         const int axis = axisOf(side), other = 2 - axis;
         const double face = maxSide(side) ? near_.max[axis] : near_.min[axis];
-        const auto along = maxSide(side) ? range(axis, face - strip, face) : range(axis, face, face + strip);
-        const auto across = range(other, near_.min[other], near_.max[other]);
-        const auto up = range(1, near_.min.y, near_.max.y);
-        for (long a = along.first; a <= along.second; ++a)
-            for (long c = across.first; c <= across.second; ++c) {
+        strips.push_back({axis, other, maxSide(side) ? range(axis, face - strip, face) : range(axis, face, face + strip),
+                          range(other, near_.min[other], near_.max[other]), range(1, near_.min.y, near_.max.y)});
+    }
+    taken_.resize(strips.size());
+    for (std::size_t n = 0; n < strips.size(); ++n) taken_[n].assign(strips[n].count(), 0);
+    const double r2 = kRoomSpacings * kRoomSpacings * s * s;
+    const glm::dvec3 origin(near_.latticeOrigin);
+    // The lattice indices along `axis` whose points lie within the room's reach of coordinate
+    // p along it (a necessary condition of the distance test: at most two).
+    const auto reach = [&](double p, int axis, std::pair<long, long> limits, long out[3]) {
+        const double u = (p - origin[axis]) / s - 0.5;
+        int n = 0;
+        for (long k = static_cast<long>(std::floor(u)) - 1; k <= static_cast<long>(std::floor(u)) + 2; ++k) {
+            const double d = origin[axis] + (static_cast<double>(k) + 0.5) * s - p;
+            if (k >= limits.first && k <= limits.second && d * d < r2 && n < 3) out[n++] = k;
+        }
+        return n;
+    };
+    for (std::uint32_t i = 0; i < particles.size(); ++i) {
+        if (!(distanceToOpenFace(particles.position[i]) < strip + 2.0 * s)) continue;
+        const glm::dvec3 p(particles.position[i]);
+        for (std::size_t n = 0; n < strips.size(); ++n) {
+            const Strip& st = strips[n];
+            long as[3], cs[3], ks[3];
+            const int na = reach(p[st.axis], st.axis, st.along, as);
+            if (na == 0) continue;
+            const int nc = reach(p[st.other], st.other, st.across, cs), nk = reach(p.y, 1, st.up, ks);
+            for (int ia = 0; ia < na; ++ia)
+                for (int ic = 0; ic < nc; ++ic)
+                    for (int ik = 0; ik < nk; ++ik) {
+                        glm::dvec3 x;
+                        x[st.axis] = origin[st.axis] + (static_cast<double>(as[ia]) + 0.5) * s;
+                        x[st.other] = origin[st.other] + (static_cast<double>(cs[ic]) + 0.5) * s;
+                        x.y = origin.y + (static_cast<double>(ks[ik]) + 0.5) * s;
+                        const glm::dvec3 d = p - x;
+                        if (glm::dot(d, d) < r2) taken_[n][st.index(as[ia], cs[ic], ks[ik])] = 1;
+                    }
+        }
+    }
+    std::uint32_t added = 0;
+    std::uint64_t visited = 0;  // lattice points under the surface so far, on every rank alike
+    for (std::size_t n = 0; n < strips.size(); ++n) {
+        const Strip& st = strips[n];
+        const int axis = st.axis, other = st.other;
+        for (long a = st.along.first; a <= st.along.second; ++a)
+            for (long c = st.across.first; c <= st.across.second; ++c) {
                 glm::dvec3 x;
                 x[axis] = near_.latticeOrigin[axis] + (static_cast<double>(a) + 0.5) * s;
                 x[other] = near_.latticeOrigin[other] + (static_cast<double>(c) + 0.5) * s;
                 const double surface = near_.stillWaterY + (field ? r * field->elevation(x.x, x.z) : 0.0);
-                for (long k = up.first; k <= up.second; ++k) {
+                for (long k = st.up.first; k <= st.up.second; ++k) {
                     x.y = near_.latticeOrigin.y + (static_cast<double>(k) + 0.5) * s;
                     // A cell wholly under the far field's surface.
                     if (x.y + 0.5 * s > surface) break;
                     const std::uint64_t visit = visited++;
                     const glm::vec3 p(x);
-                    if (outside(p) || occupied(x) || !room(p)) continue;
+                    if (outside(p) || taken_[n][st.index(a, c, k)] || !room(p)) continue;
                     if (particles.size() >= capacity) return added;
                     particles.append(p, field ? glm::vec3(velocityFrom(*field, p, r)) : glm::vec3(0.0f), mass, material,
                                      restDensity);
-                    addedCells[cellOf(x)].push_back(p);
+                    for (std::size_t m = n + 1; m < strips.size(); ++m) {
+                        const Strip& o = strips[m];
+                        long index[3];
+                        index[axis] = a, index[other] = c, index[1] = k;
+                        const long oa = index[o.axis], oc = index[o.other];
+                        if (oa >= o.along.first && oa <= o.along.second && oc >= o.across.first && oc <= o.across.second)
+                            taken_[m][o.index(oa, oc, k)] = 1;
+                    }
                     if (visits) visits->push_back(visit);
                     ++added;
                     ++totals_.added;

@@ -59,9 +59,17 @@ inline constexpr double kBufferSpacings = 3.0;
 /// many spacings apart and levels half as far (its error against the direct sum:
 /// OceanZones.TheLatticeHoldsTheDirectSumsWhereParticlesReadIt).
 inline constexpr double kLatticeSpacings = 1.0;
-/// The lattice is summed exactly at knots in time this many to the shortest component's
-/// period, and blended between them (SeaLattice::blend) at every step.
-inline constexpr double kKnotsPerPeriod = 8.0;
+/// The lattice is summed exactly at knots in time and blended between them (SeaLattice::blend)
+/// at every step: this many knots a period for the largest component; see knotStep.
+inline constexpr double kKnotsPerPeriod = 12.0;
+
+/// The time between the lattice's knots for `sea`, s: the Hermite blend's error for a
+/// component, about a (ω Δt)⁴/384, stays within what kKnotsPerPeriod gives the largest
+/// component, (2π/12)⁴/384 ≈ 2e-4 of its amplitude, for every component. A spectrum's short
+/// components are small (its ω⁻⁵ tail) and need no knots of their own: ocean_pile's sea takes
+/// knots further apart than 8 a period of its shortest component did (the first lattice's
+/// rule), and its blended error is as small (OceanZones.TheLatticeHoldsTheDirectSums…).
+double knotStep(const Sea& sea);
 
 /// Where the near field is: its faces (the planes the walls would stand on), its floor, still
 /// water and lattice.
@@ -153,7 +161,7 @@ private:
     std::vector<std::uint32_t> held_;  // the buffers' particles at the step's start
     std::vector<glm::vec3> heldFrom_;
     std::vector<glm::vec3> heldVelocity_;
-    std::vector<std::pair<std::int64_t, glm::vec3>> binned_;  // scratch of refill
+    std::vector<std::vector<std::uint8_t>> taken_;  // scratch of refill: per side, its strip's points with no room
     std::optional<SeaLattice> lattice_;  // the far field for the bands, at the last time asked
     std::vector<SeaLattice> knots_;      // two exact lattices at knots in time, with rates
     double knotStep_ = 1.0;
