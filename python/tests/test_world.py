@@ -184,9 +184,10 @@ def test_the_gil_is_released_while_stepping():
     world = tide.World(small_tank())
     start = world.time
     seen = []
-    done = threading.Event()
+    ready, done = threading.Event(), threading.Event()
 
     def watch():  # runs only when the stepping thread lets go of the GIL
+        ready.set()
         while not done.is_set():
             t = world.time
             if t > start:
@@ -195,7 +196,8 @@ def test_the_gil_is_released_while_stepping():
 
     watcher = threading.Thread(target=watch)
     watcher.start()
-    world.advance(0.1)
+    ready.wait()  # spinning before the steps start (it once began only after a short advance ended)
+    world.advance(0.5)  # hundreds of steps: the watcher gets the GIL many times over if it is free
     done.set()
     watcher.join()
     end = world.time
