@@ -262,6 +262,7 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
     // p along it (a necessary condition of the distance test: at most two).
     const auto reach = [&](double p, int axis, std::pair<long, long> limits, long out[3]) {
         const double u = (p - origin[axis]) / s - 0.5;
+        if (!(std::abs(u) < 1e9)) return 0;  // a stray far outside (or not finite): no index to cast
         int n = 0;
         for (long k = static_cast<long>(std::floor(u)) - 1; k <= static_cast<long>(std::floor(u)) + 2; ++k) {
             const double d = origin[axis] + (static_cast<double>(k) + 0.5) * s - p;
