@@ -376,28 +376,6 @@ TEST(OceanZones, DISABLED_RegularWaveFromTheZoneAloneAndAbsorbedAtTheFarEnd) {
     EXPECT_GT(least, start - start / 20);
 }
 
-/// The spectral peak period of a record: the periodogram band-averaged over 2·half + 1
-/// Fourier frequencies (Welch-free smoothing: one record, few periods), its highest band.
-double peakPeriod(const waves::Record& r, int half) {
-    const std::size_t n = r.eta.size();
-    const double duration = static_cast<double>(n) * r.dt, mean = waves::mean(r);
-    std::vector<double> power;
-    for (std::size_t j = 1; j < n / 2; ++j) {
-        std::complex<double> sum = 0.0;
-        const double omega = 2.0 * std::numbers::pi * static_cast<double>(j) / duration;
-        for (std::size_t k = 0; k < n; ++k) sum += (r.eta[k] - mean) * std::exp(std::complex<double>(0.0, -omega * r.dt * static_cast<double>(k)));
-        power.push_back(std::norm(sum));
-    }
-    double best = -1.0;
-    std::size_t at = 0;
-    for (std::size_t j = static_cast<std::size_t>(half); j + static_cast<std::size_t>(half) < power.size(); ++j) {
-        double band = 0.0;
-        for (std::size_t i = j - half; i <= j + half; ++i) band += power[i];
-        if (band > best) best = band, at = j;
-    }
-    return duration / static_cast<double>(at + 1);
-}
-
 /// The Fourier coefficients of a record's fluctuation at the frequencies j/duration, j = 1 … n/2 − 1.
 std::vector<std::complex<double>> fourier(const waves::Record& r) {
     const std::size_t n = r.eta.size();
@@ -410,6 +388,22 @@ std::vector<std::complex<double>> fourier(const waves::Record& r) {
         c.push_back(sum);
     }
     return c;
+}
+
+/// The spectral peak period of a record: the periodogram band-averaged over 2·half + 1
+/// Fourier frequencies (Welch-free smoothing: one record, few periods), its highest band.
+double peakPeriod(const waves::Record& r, int half) {
+    const double duration = static_cast<double>(r.eta.size()) * r.dt;
+    std::vector<double> power;
+    for (const std::complex<double>& c : fourier(r)) power.push_back(std::norm(c));
+    double best = -1.0;
+    std::size_t at = 0;
+    for (std::size_t j = static_cast<std::size_t>(half); j + static_cast<std::size_t>(half) < power.size(); ++j) {
+        double band = 0.0;
+        for (std::size_t i = j - half; i <= j + half; ++i) band += power[i];
+        if (band > best) best = band, at = j;
+    }
+    return duration / static_cast<double>(at + 1);
 }
 
 /// Which frequencies a measured record lost against the far field's: per band of ω/ωp, the
@@ -439,7 +433,9 @@ void printBandTransfer(const waves::Record& measured, const waves::Record& far, 
 // through a flume open at both ends, zones one peak wavelength wide, one between them: Hm0
 // and Tp at the central gauge within 5 % of the far field's at that point over the same
 // window (the same estimators on both records), the particle count within 1 % of its start.
-// A benchmark (2D at 2 cm, 100 s: ~15 min on one thread); TIDE_ZONE_* change it.
+// A benchmark (2D at 2 cm, 100 s: 27 min on one thread); TIDE_ZONE_* change it, and print more:
+// TIDE_ZONE_BANDS=1 the loss per band of frequency, TIDE_ZONE_WINDOWS=1 per 10 s window,
+// TIDE_ZONE_CURRENT=1 the mean current between the zones each second (docs/notes/ocean.md).
 TEST(OceanZones, DISABLED_IrregularSeaMatchesTheFarFieldAtTheCentre) {
     OceanDef o;
     o.depth = 0.7;
