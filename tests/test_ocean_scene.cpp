@@ -122,11 +122,11 @@ TEST(OceanScene, ProblemsNameTheirJsonPath) {
               "ocean.depth: must not exceed the domain height 1.2, got 2");
     // A domain top under the crests is a lid on the waves (1.2 m tall: 0.05 m above 1.15 m of water).
     EXPECT_EQ(one(R"({"depth": 1.15, "waves": {"type": "jonswap", "hs": 0.1, "tp": 3}})"),
-              "domain.max[1]: stands 0.05 above the ocean's still water, under its crests (about 0.1: Hs); "
-              "raise it to at least 1.25, got 1.2");
+              "domain.max[1]: the domain's top stands 0.05 m above the ocean's still water, under its crests "
+              "(about 0.1 m: Hs); raise it by 0.05 m or more");
     EXPECT_EQ(one(R"({"depth": 1.05, "waves": {"type": "regular", "height": 0.2, "period": 3}})"),
-              "domain.max[1]: stands 0.15 above the ocean's still water, under its crests (about 0.2: the wave "
-              "height); raise it to at least 1.25, got 1.2");
+              "domain.max[1]: the domain's top stands 0.15 m above the ocean's still water, under its crests "
+              "(about 0.2 m: the wave height); raise it by 0.05 m or more");
 }
 
 TEST(OceanScene, RefusesZonesWiderThanTheRegionAndOpenSidesThatCannotBe) {

@@ -247,14 +247,20 @@ TEST(SolitaryWave, GoringStrokeFollowsTheWaterUnderTheWave) {
     }
 }
 
-/// The message of checkWaveFitsTank for `def` in a tank `length` long at `spacing`, or "" if it fits.
-std::string refusal(const WaveMakerDef& def, float length = 4.0f, float spacing = 0.02f) {
+/// The message of the std::invalid_argument `check` throws, or "" if it passes.
+template <class Check>
+std::string refusalOf(Check&& check) {
     try {
-        checkWaveFitsTank(def, length, spacing, g);
+        check();
     } catch (const std::invalid_argument& e) {
         return e.what();
     }
     return "";
+}
+
+/// The message of checkWaveFitsTank for `def` in a tank `length` long at `spacing`, or "" if it fits.
+std::string refusal(const WaveMakerDef& def, float length = 4.0f, float spacing = 0.02f) {
+    return refusalOf([&] { checkWaveFitsTank(def, length, spacing, g); });
 }
 
 TEST(WaveMakerInput, WavesTheTankOrTheSpacingCannotHoldAreRefusedByFieldAndValue) {
@@ -303,12 +309,7 @@ TEST(WaveMakerInput, WavesTheTankOrTheSpacingCannotHoldAreRefusedByFieldAndValue
 
 /// The message of checkRoomAboveWaves, or "" if the crests have room.
 std::string lidRefusal(const WaveMakerDef& def, double headroom) {
-    try {
-        checkRoomAboveWaves(def, headroom);
-    } catch (const std::invalid_argument& e) {
-        return e.what();
-    }
-    return "";
+    return refusalOf([&] { checkRoomAboveWaves(def, headroom); });
 }
 
 TEST(WaveMakerInput, ADomainTopUnderTheCrestsIsRefused) {

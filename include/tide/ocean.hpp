@@ -73,8 +73,13 @@ double oceanZoneWidth(const OceanDef& def, double g = 9.81);
 /// How far above still water the sea's crests may reach, m: H for regular waves (a steep or
 /// shallow-water wave's crest stands up to ~0.8 H above it), Hs for a spectrum (the highest of
 /// a thousand Rayleigh-distributed crests is ~0.93 Hs, √(2 ln N)/4 Hs; Longuet-Higgins 1952).
-/// A domain whose top is lower puts a lid on the waves (World::setOcean refuses it).
 double oceanCrestHeight(const OceanDef& def);
+
+/// Throws std::invalid_argument naming domain.max[1] when the domain's top stands less than
+/// oceanCrestHeight above still water (`headroom`, m): a lid that clips every crest (an
+/// irregular sea under a top 4 cm above its still water lost 40 % of its Hm0 in a wavelength).
+/// World::setOcean and the scene reader call it.
+void checkRoomAboveSea(const OceanDef& def, double headroom);
 
 /// The scene key of a side: "-x", "+x", "-z", "+z".
 const char* oceanSideName(OceanSide side);

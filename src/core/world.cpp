@@ -440,16 +440,7 @@ void World::setOcean(const OceanDef& ocean, MaterialIndex material) {
     if (!(ocean.depth <= height))
         throw std::invalid_argument("ocean.depth: must not exceed the domain height " + show(height) + ", got " +
                                     show(static_cast<float>(ocean.depth)));
-    // A lid just above still water clips every crest: an irregular sea under a domain 4 cm
-    // above its still water lost 40 % of its Hm0 within a peak wavelength (docs/notes/ocean.md).
-    const double headroom = static_cast<double>(height) - ocean.depth, crest = oceanCrestHeight(ocean);
-    if (headroom < crest - 1e-6)  // (the domain is in float)
-        throw std::invalid_argument("domain.max[1]: the domain's top stands " + show(static_cast<float>(headroom)) +
-                                    " m above the ocean's still water, under its crests (about " +
-                                    show(static_cast<float>(crest)) + " m: " +
-                                    (ocean.waves.type == OceanWavesDef::Type::Regular ? "H" : "Hs") +
-                                    "); raise it to at least " +
-                                    show(w.def.domainMin.y + static_cast<float>(ocean.depth + crest)));
+    checkRoomAboveSea(ocean, static_cast<double>(height) - ocean.depth);
     unsigned faces = 0;
     for (std::size_t i = 0; i < ocean.openSides.size(); ++i) {
         const OceanSide side = ocean.openSides[i];

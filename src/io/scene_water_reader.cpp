@@ -240,16 +240,14 @@ void readOcean(Reader& r, const json& j, Scene& scene, float scale, bool domainO
             r.fail("ocean.depth", msg.str());
             return;
         }
-        // The same lid World::setOcean refuses: a domain top under the crests.
-        const double crest = oceanCrestHeight(def);
-        if (static_cast<double>(height) - def.depth < crest - 1e-6) {
-            std::ostringstream msg;
-            msg << "stands " << (static_cast<double>(height) - def.depth) / scale
-                << " above the ocean's still water, under its crests (about " << crest / scale
-                << (def.waves.type == OceanWavesDef::Type::Regular ? ": the wave height" : ": Hs")
-                << "); raise it to at least " << (world.domainMin.y + def.depth + crest) / scale << ", got "
-                << world.domainMax.y / scale;
-            r.fail("domain.max[1]", msg.str());
+        // The lid World::setOcean refuses too (so `tide validate` reports it); metres, as
+        // the wave maker's checks.
+        try {
+            checkRoomAboveSea(def, static_cast<double>(height) - def.depth);
+        } catch (const std::invalid_argument& e) {
+            const std::string message = e.what();
+            const std::size_t colon = message.find(": ");
+            r.fail(message.substr(0, colon), message.substr(colon + 2));
         }
         const double g = std::max(1e-6, static_cast<double>(glm::length(world.gravity)));
         const double width = oceanZoneWidth(def, g);

@@ -93,6 +93,18 @@ double oceanCrestHeight(const OceanDef& def) {
     return def.waves.type == OceanWavesDef::Type::Regular ? def.waves.height : def.waves.hs;
 }
 
+void checkRoomAboveSea(const OceanDef& def, double headroom) {
+    const double crest = oceanCrestHeight(def);
+    if (headroom < crest - 1e-6) {  // (a domain is in float)
+        std::ostringstream message;
+        message << "domain.max[1]: the domain's top stands " << headroom
+                << " m above the ocean's still water, under its crests (about " << crest << " m: "
+                << (def.waves.type == OceanWavesDef::Type::Regular ? "the wave height" : "Hs") << "); raise it by "
+                << crest - headroom << " m or more";
+        throw std::invalid_argument(message.str());
+    }
+}
+
 const char* oceanSideName(OceanSide side) {
     switch (side) {
         case OceanSide::MinusX: return "-x";
