@@ -75,6 +75,13 @@ double oceanZoneWidth(const OceanDef& def, double g = 9.81);
 /// a thousand Rayleigh-distributed crests is ~0.93 Hs, √(2 ln N)/4 Hs; Longuet-Higgins 1952).
 double oceanCrestHeight(const OceanDef& def);
 
+/// The layers of particles still water `depth` deep is filled with on a lattice of `spacing`
+/// (World::fillOcean, and the zones' inflow): the nearest whole number of spacings, at least
+/// one, each depth/n tall, their particles' mass scaled by (depth/n)/spacing, so the water
+/// stands at the still water level at rest density. Whole cubic cells would leave it up to a
+/// spacing low (0.7 m at 16 mm: 43 cells, 12 mm under the far field's still water).
+std::uint32_t oceanStillWaterLayers(double depth, double spacing);
+
 /// Throws std::invalid_argument naming domain.max[1] when the domain's top stands less than
 /// oceanCrestHeight above still water (`headroom`, m): a lid that clips every crest (an
 /// irregular sea under a top 4 cm above its still water lost 40 % of its Hm0 in a wavelength).

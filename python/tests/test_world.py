@@ -335,3 +335,10 @@ def test_a_floating_body_falls_freely_until_it_meets_the_water():
     assert np.linalg.norm(now["orientation"][0]) == pytest.approx(1.0, abs=1e-9)
     assert np.abs(now["angular_velocity"][0]).max() < 1e-6
     assert np.abs(now["contact_force"][0]).max() == 0.0
+
+
+def test_a_world_whose_scene_was_refused_still_prints():
+    # pytest prints the locals of a failed test, a half-made World among them.
+    world = tide.World.__new__(tide.World)
+    assert repr(world) == "<tide.World (not built)>"
+    assert repr(tide.World(small_tank())).startswith("<tide.World ")

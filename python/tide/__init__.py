@@ -80,8 +80,13 @@ class World(_tide.World):
         else:
             raise TypeError(f"scene: must be a path or a dict, got {type(scene).__name__}")
         super().__init__(text, source, base, threads, 0 if capacity is None else int(capacity), settle)
+        self._built = True
 
     def __repr__(self):
+        # A world whose scene was refused has no C++ object behind it: pytest's traceback
+        # printed one and crashed the interpreter.
+        if not getattr(self, "_built", False):
+            return "<tide.World (not built)>"
         return (f"<tide.World {self.name!r}: {self.particle_count} particles, t = {self.time:g} s, "
                 f"{self.stats['solver']}>")
 

@@ -458,6 +458,8 @@ void World::setOcean(const OceanDef& ocean, MaterialIndex material) {
     near.stillWaterY = static_cast<double>(w.def.domainMin.y) + ocean.depth;
     near.spacing = w.def.particleSpacing;
     near.latticeOrigin = w.latticeOrigin;
+    const double depthOnLattice = near.stillWaterY - static_cast<double>(w.latticeOrigin.y);
+    near.layer = depthOnLattice / oceanStillWaterLayers(depthOnLattice, near.spacing);
     const double g = std::max(1e-6, static_cast<double>(glm::length(w.def.gravity)));
     w.zones = std::make_unique<ocean::RelaxationZones>(ocean, near, g);
     w.oceanDef = ocean;
@@ -470,14 +472,25 @@ void World::setOcean(const OceanDef& ocean, MaterialIndex material) {
 }
 
 AddStatus World::fillOcean() {
-    const Impl& w = *impl_;
+    Impl& w = *impl_;
     if (!w.zones) throw std::logic_error("fillOcean: no ocean (setOcean first)");
-    BlockDef block;
-    block.min = w.wallsMin();
-    block.max = w.wallsMax();
-    block.max.y = static_cast<float>(static_cast<double>(w.def.domainMin.y) + w.oceanDef.depth);
-    block.material = w.oceanMaterial;
-    return addBlock(block);
+    // The domain's lattice across, the still water's layers up (oceanStillWaterLayers): its
+    // surface stands at the far field's still water level whatever the depth and spacing.
+    const ocean::NearField& near = w.zones->nearField();
+    const Lattice across = w.blockLattice(w.wallsMin(), {w.wallsMax().x, w.wallsMin().y + w.def.particleSpacing, w.wallsMax().z});
+    const auto layers = static_cast<std::uint32_t>(std::lround((near.stillWaterY - near.latticeOrigin.y) / near.layer));
+    std::vector<glm::vec3> points;
+    across.forEach([&](const glm::vec3& column) {
+        for (std::uint32_t k = 0; k < layers; ++k) {
+            const glm::vec3 x(column.x, static_cast<float>(near.latticeOrigin.y + (k + 0.5) * near.layer), column.z);
+            if (w.roomFor(x, Impl::Fill::Block)) points.push_back(x);
+        }
+    });
+    if (w.particles.size() + points.size() > w.def.capacity) return AddStatus::OverCapacity;
+    const float mass = w.oceanMass(), rho0 = w.materials[w.oceanMaterial].restDensity;
+    w.particles.makeRoomFor(static_cast<std::uint32_t>(points.size()));
+    for (const glm::vec3& x : points) w.particles.append(x, glm::vec3(0.0f), mass, w.oceanMaterial, rho0, 0.0f);
+    return AddStatus::Added;
 }
 
 bool World::hasOcean() const { return impl_->zones != nullptr; }

@@ -183,7 +183,7 @@ struct World::Impl {
             return;
         }
         stats.oceanRemoved += zones->removeOutflow(particles);
-        stats.oceanAdded += zones->refill(particles, end, massOf(oceanMaterial), oceanMaterial,
+        stats.oceanAdded += zones->refill(particles, end, oceanMass(), oceanMaterial,
                                           materials[oceanMaterial].restDensity, def.capacity,
                                           [&](const glm::vec3& x) { return roomFor(x, Fill::Block); }, threads);
     }
@@ -432,6 +432,10 @@ struct World::Impl {
     }
 
     [[nodiscard]] float massOf(MaterialIndex m) const { return materials[m].restDensity / latticeSum; }
+    /// An ocean particle's mass: its lattice cell is a layer tall (ocean::NearField::layer).
+    [[nodiscard]] float oceanMass() const {
+        return static_cast<float>(massOf(oceanMaterial) * zones->nearField().layer / def.particleSpacing);
+    }
 
     /// A block as this world fills it: in 2D on the plane z = 0 (its z extent dropped).
     [[nodiscard]] BlockDef inPlane(BlockDef block) const {

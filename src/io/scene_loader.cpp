@@ -98,9 +98,10 @@ SceneEstimate estimate(const Scene& scene) {
     // An ocean's still water (World::fillOcean; the inflow keeps the count near it).
     if (scene.ocean && !scene.materials.empty()) {
         glm::vec3 top = scene.world.domainMax;
-        top.y = static_cast<float>(scene.world.domainMin.y + scene.ocean->depth);
-        e.initialParticles[0] =
-            saturatingAdd(e.initialParticles[0], Lattice::onDomainLattice(scene.world.domainMin, top, s, latticeOrigin).size());
+        top.y = scene.world.domainMin.y + s;  // one layer: the columns across
+        const double columns = static_cast<double>(Lattice::onDomainLattice(scene.world.domainMin, top, s, latticeOrigin).size());
+        e.initialParticles[0] = saturatingAdd(
+            e.initialParticles[0], saturatingCount(columns * oceanStillWaterLayers(scene.ocean->depth, s)));
     }
     for (const EmitterDef& em : scene.emitters) {
         const double active = std::min(em.end, scene.endTime) - em.start;

@@ -93,6 +93,11 @@ double oceanCrestHeight(const OceanDef& def) {
     return def.waves.type == OceanWavesDef::Type::Regular ? def.waves.height : def.waves.hs;
 }
 
+std::uint32_t oceanStillWaterLayers(double depth, double spacing) {
+    const double n = std::round(depth / spacing);
+    return n >= 1.0 ? (n < 4.0e9 ? static_cast<std::uint32_t>(n) : 4000000000u) : 1u;
+}
+
 void checkRoomAboveSea(const OceanDef& def, double headroom) {
     const double crest = oceanCrestHeight(def);
     if (headroom < crest - 1e-6) {  // (a domain is in float)

@@ -221,11 +221,13 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
     const SeaLattice* field = r == 0.0 ? nullptr : &lattice(t, threads);
     const double s = near_.spacing;
     const double strip = kStripSpacings * s;
-    // Lattice indices k with origin + (k + ½)s in [lo, hi].
+    // The still water's lattice: a spacing apart across, a layer apart up (NearField::layer).
+    const glm::dvec3 step(s, near_.layer, s);
+    // Lattice indices k with origin + (k + ½)step in [lo, hi].
     const auto range = [&](int axis, double lo, double hi) {
         const double o = near_.latticeOrigin[axis];
-        return std::pair<long, long>{static_cast<long>(std::ceil((lo - o) / s - 0.5 - 1e-6)),
-                                     static_cast<long>(std::floor((hi - o) / s - 0.5 + 1e-6))};
+        return std::pair<long, long>{static_cast<long>(std::ceil((lo - o) / step[axis] - 0.5 - 1e-6)),
+                                     static_cast<long>(std::floor((hi - o) / step[axis] - 0.5 + 1e-6))};
     };
     // Each side's strip of lattice points (along its axis, across it, up) and which of them
     // have a particle within kRoomSpacings: every particle near a strip marks the few points
@@ -261,11 +263,11 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
     // The lattice indices along `axis` whose points lie within the room's reach of coordinate
     // p along it (a necessary condition of the distance test: at most two).
     const auto reach = [&](double p, int axis, std::pair<long, long> limits, long out[3]) {
-        const double u = (p - origin[axis]) / s - 0.5;
+        const double u = (p - origin[axis]) / step[axis] - 0.5;
         if (!(std::abs(u) < 1e9)) return 0;  // a stray far outside (or not finite): no index to cast
         int n = 0;
         for (long k = static_cast<long>(std::floor(u)) - 1; k <= static_cast<long>(std::floor(u)) + 2; ++k) {
-            const double d = origin[axis] + (static_cast<double>(k) + 0.5) * s - p;
+            const double d = origin[axis] + (static_cast<double>(k) + 0.5) * step[axis] - p;
             if (k >= limits.first && k <= limits.second && d * d < r2 && n < 3) out[n++] = k;
         }
         return n;
@@ -285,7 +287,7 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
                         glm::dvec3 x;
                         x[st.axis] = origin[st.axis] + (static_cast<double>(as[ia]) + 0.5) * s;
                         x[st.other] = origin[st.other] + (static_cast<double>(cs[ic]) + 0.5) * s;
-                        x.y = origin.y + (static_cast<double>(ks[ik]) + 0.5) * s;
+                        x.y = origin.y + (static_cast<double>(ks[ik]) + 0.5) * step.y;
                         const glm::dvec3 d = p - x;
                         if (glm::dot(d, d) < r2) taken_[n][st.index(as[ia], cs[ic], ks[ik])] = 1;
                     }
@@ -303,9 +305,9 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
                 x[other] = near_.latticeOrigin[other] + (static_cast<double>(c) + 0.5) * s;
                 const double surface = near_.stillWaterY + (field ? r * field->elevation(x.x, x.z) : 0.0);
                 for (long k = st.up.first; k <= st.up.second; ++k) {
-                    x.y = near_.latticeOrigin.y + (static_cast<double>(k) + 0.5) * s;
+                    x.y = near_.latticeOrigin.y + (static_cast<double>(k) + 0.5) * step.y;
                     // A cell wholly under the far field's surface.
-                    if (x.y + 0.5 * s > surface) break;
+                    if (x.y + 0.5 * step.y > surface) break;
                     const std::uint64_t visit = visited++;
                     const glm::vec3 p(x);
                     if (outside(p) || taken_[n][st.index(a, c, k)] || !room(p)) continue;

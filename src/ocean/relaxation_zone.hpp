@@ -78,7 +78,11 @@ struct NearField {
     glm::vec3 max{0.0f};
     double stillWaterY = 0.0;     ///< world y of the sea's still water (floor + depth), m
     float spacing = 0.02f;        ///< the particles' lattice spacing, m
-    glm::vec3 latticeOrigin{0.0f};  ///< lattice points at origin + (k + ½) spacing
+    glm::vec3 latticeOrigin{0.0f};  ///< lattice points at origin + (k + ½) spacing (x and z)
+    /// The still water's layers (tide::oceanStillWaterLayers): points at latticeOrigin.y +
+    /// (k + ½) layer, whole layers ending at the still water level; the spacing when the depth
+    /// is a multiple of it, m.
+    double layer = 0.02;
 };
 
 /// Counts of what the zones did (running totals since creation).
@@ -98,6 +102,7 @@ public:
     [[nodiscard]] unsigned openFaces() const { return openFaces_; }
     [[nodiscard]] double width() const { return width_; }
     [[nodiscard]] const Sea& sea() const { return sea_; }
+    [[nodiscard]] const NearField& nearField() const { return near_; }
     /// The ramp factor of the far field at time t (0 at t = 0, 1 after one peak period).
     [[nodiscard]] double ramp(double t) const;
     /// 1/τ at x: 0 outside the bands, 1/τ0 at the outer edge, 1/s.
