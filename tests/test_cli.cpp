@@ -198,6 +198,23 @@ TEST(Cli, ValidateDescribesAGoodScene) {
     EXPECT_NE(r.output.find("MiB"), std::string::npos);
 }
 
+TEST(Cli, ValidateWarnsWhenTheWaterAtAPaddleIsNotItsDepth) {
+    // A block holds whole cells: 0.1 m at 2 cm is 5 of them, 0.11 m would need 5.5.
+    const auto flume = [](const char* depth) {
+        return replace(replace(smallScene(R"(, "wavemaker": {"type": "piston", "x": 0.05, "depth": )" + std::string(depth) +
+                                          R"(, "wave_height": 0.01, "period": 0.5})"),
+                               "\"max\": [0.2, 0.2, 0.2]", "\"max\": [0.6, 0.3, 0.06]"),
+                       "\"max\": [0.1, 0.1, 0.2]", "\"max\": [0.6, 0.1, 0.06]");
+    };
+    const Result right = run(kTide + " validate " + writeScene("paddle_right", flume("0.1")).string());
+    EXPECT_EQ(right.exit, 0) << right.output;
+    EXPECT_EQ(right.output.find("warning"), std::string::npos) << right.output;
+    const Result off = run(kTide + " validate " + writeScene("paddle_off", flume("0.11")).string());
+    EXPECT_EQ(off.exit, 0) << off.output;
+    EXPECT_NE(off.output.find("warning: wavemaker: depth 0.11 m, but blocks[0] holds water 0.1 m deep"), std::string::npos)
+        << off.output;
+}
+
 TEST(Cli, ShippedPoiseuilleChannelRunsOnPeriodicAxes) {
     const std::string scene = std::string(TIDE_SCENES_DIR) + "/poiseuille.json";
     const Result validate = run(kTide + " validate " + scene);

@@ -288,6 +288,7 @@ TEST(OceanScene, ValidateReportsTheWavesAndWarnsWhenTooCoarse) {
     EXPECT_NE(fine.output.find(wavelength), std::string::npos) << fine.output;
     EXPECT_NE(fine.output.find("16.0 particles per wave height"), std::string::npos) << fine.output;
     EXPECT_NE(fine.output.find("zones    1.5 m on -x, +z"), std::string::npos) << fine.output;
+    EXPECT_NE(fine.output.find("fills the domain to 0.7 m in 70 layers of 0.01 m"), std::string::npos) << fine.output;
     EXPECT_EQ(fine.output.find("warning"), std::string::npos) << fine.output;
 
     const tide::testing::Result coarse = tide::testing::run(std::string(TIDE_BIN) + " validate " + write("coarse.json", 0.04));

@@ -572,21 +572,64 @@ PlaneWave beamform(const std::vector<double>& xs, const std::vector<double>& zs,
     return best;
 }
 
-// Acceptance item 6: regular waves at 30° to x in a square near field open on all four sides.
-// A benchmark (3D; at 2.5 cm, 4 particles per wave height, ~3·10⁵ particles): the direction
-// from a 3 × 3 gauge array at the centre (a quarter wavelength apart) within 3° of the far
-// field's, the height there within 8 %, and the disturbance |A − A_far|/|A_far| of the first
-// harmonic just inside the zones no larger at the four corners than at the four sides' middles;
-// and item 7 on four sides: RMS(η − η_far) along the zones' inner edges within a spacing.
-//   TIDE_ZONE_SPACING=0.025 build/bin/test_ocean_zones --gtest_also_run_disabled_tests --gtest_filter='*Oblique*'
-TEST(OceanZones, DISABLED_ObliqueWavesCrossASquareNearFieldOpenOnAllSides) {
-    const double H = envOr("TIDE_ZONE_HEIGHT", 0.1), T = envOr("TIDE_ZONE_PERIOD", 1.0), d = envOr("TIDE_ZONE_DEPTH", 0.3);
-    const double direction = envOr("TIDE_ZONE_DIRECTION", 30.0);
+/// The complex amplitudes of plane waves of wavenumber k travelling towards `directions`
+/// (degrees) that fit first-harmonic amplitudes A_j at gauges (x_j, z_j) best in the least
+/// squares: A_j ≈ Σ_m B_m e^{−i k (x_j cos θ_m + z_j sin θ_m)} (Mansard & Funke 1980's
+/// incident/reflected split, in the plane), by the normal equations.
+std::vector<std::complex<double>> fitPlaneWaves(const std::vector<double>& xs, const std::vector<double>& zs,
+                                                const std::vector<std::complex<double>>& a, double k,
+                                                const std::vector<double>& directions) {
+    const std::size_t n = directions.size();
+    std::vector<std::vector<std::complex<double>>> m(n, std::vector<std::complex<double>>(n + 1, 0.0));
+    for (std::size_t g = 0; g < a.size(); ++g) {
+        std::vector<std::complex<double>> row;
+        for (const double d : directions) {
+            const double theta = d * std::numbers::pi / 180.0;
+            row.push_back(std::exp(std::complex<double>(0.0, -k * (xs[g] * std::cos(theta) + zs[g] * std::sin(theta)))));
+        }
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t j = 0; j < n; ++j) m[i][j] += std::conj(row[i]) * row[j];
+            m[i][n] += std::conj(row[i]) * a[g];
+        }
+    }
+    for (std::size_t i = 0; i < n; ++i) {  // Gauss–Jordan with partial pivoting
+        std::size_t pivot = i;
+        for (std::size_t r = i + 1; r < n; ++r)
+            if (std::abs(m[r][i]) > std::abs(m[pivot][i])) pivot = r;
+        std::swap(m[i], m[pivot]);
+        for (std::size_t r = 0; r < n; ++r) {
+            if (r == i) continue;
+            const std::complex<double> f = m[r][i] / m[i][i];
+            for (std::size_t c = i; c <= n; ++c) m[r][c] -= f * m[i][c];
+        }
+    }
+    std::vector<std::complex<double>> b;
+    for (std::size_t i = 0; i < n; ++i) b.push_back(m[i][n] / m[i][i]);
+    return b;
+}
+
+/// What the oblique-wave square measures (obliqueWavesInASquare).
+struct ObliqueSquare {
+    double direction = 0.0;  ///< measured at the centre, degrees
+    double height = 0.0;     ///< mean up-crossing height at the centre's array, m
+    double fromX = 0.0, fromZ = 0.0, fromCorner = 0.0;  ///< reflected / incident
+    double seamRms = 0.0;    ///< RMS(η − η_far) along the zones' inner edges, m
+    std::uint32_t start = 0, least = 0, most = 0;  ///< particle counts
+};
+
+/// Regular waves (H, T, depth d, towards `direction`) through a square near field open on all
+/// four sides, zones `zoneWavelengths` wide around one wavelength of water; measured over the
+/// last four of `periods`: the direction from a 5 × 5 gauge array at the centre (a fifth of a
+/// wavelength apart), its height, and the reflections: the array's first harmonic split into
+/// the incident wave and the waves the +x side, the +z side and their corner send back
+/// (towards 180° − θ, −θ and 180° + θ); and the seam, RMS(η − η_far) at five gauges along each
+/// zone's inner edge.
+ObliqueSquare obliqueWavesInASquare(double H, double T, double d, double direction, float spacing, double periods,
+                                    double zoneWavelengths) {
     OceanDef o = regularOcean(H, T, d, {OceanSide::MinusX, OceanSide::PlusX, OceanSide::MinusZ, OceanSide::PlusZ}, 0.0);
     o.waves.direction = direction;
     const double L = oceanPeakWavelength(o), k = 2.0 * std::numbers::pi / L, omega = 2.0 * std::numbers::pi / T;
-    const float spacing = static_cast<float>(envOr("TIDE_ZONE_SPACING", 0.025));
-    const double zone = envOr("TIDE_ZONE_WIDTH", 1.0) * L, inner = envOr("TIDE_ZONE_GAP", 1.0) * L;
+    const double zone = zoneWavelengths * L, inner = L;
     o.zoneWidth = zone;
     const auto side = static_cast<float>(std::round((2.0 * zone + inner) / spacing) * spacing);
     WorldDef def;
@@ -598,78 +641,96 @@ TEST(OceanZones, DISABLED_ObliqueWavesCrossASquareNearFieldOpenOnAllSides) {
     World world(def);
     world.addMaterial(MaterialDef{});
     world.setOcean(o);
-    ASSERT_EQ(world.fillOcean(), AddStatus::Added);
-    const std::uint32_t start = world.particles().size();
-    // Gauges: the centre's 3 × 3 array, then the interior's corners and the middles of its sides,
-    // a tenth of a wavelength inside the zones' inner edges.
-    const double c = 0.5 * side, a = zone + 0.1 * L, b = side - zone - 0.1 * L;
+    EXPECT_EQ(world.fillOcean(), AddStatus::Added);
+    ObliqueSquare r;
+    r.start = r.least = r.most = world.particles().size();
+    // The centre's array; then five gauges along each zone's inner edge, between the corners.
+    const double c = 0.5 * side;
     std::vector<double> xs, zs;
-    for (int i = -1; i <= 1; ++i)
-        for (int j = -1; j <= 1; ++j) xs.push_back(c + 0.25 * L * i), zs.push_back(c + 0.25 * L * j);
-    const std::size_t corners = xs.size();
-    for (const double x : {a, b})
-        for (const double z : {a, b}) xs.push_back(x), zs.push_back(z);
-    const std::size_t sides = xs.size();
-    xs.insert(xs.end(), {a, b, c, c});
-    zs.insert(zs.end(), {c, c, a, b});
-    // The seam (item 7): five gauges along each zone's inner edge, between the corners.
-    const std::size_t seam = xs.size();
+    for (int i = -2; i <= 2; ++i)
+        for (int j = -2; j <= 2; ++j) xs.push_back(c + 0.2 * L * i), zs.push_back(c + 0.2 * L * j);
+    const std::size_t seamFrom = xs.size();
     for (int j = 0; j < 5; ++j) {
         const double along = zone + inner * (j + 0.5) / 5.0;
         xs.insert(xs.end(), {zone, side - zone, along, along});
         zs.insert(zs.end(), {along, along, zone, side - zone});
     }
     const ocean::Sea sea = ocean::Sea::fromDef(o);
-    const double sample = 0.025, periods = envOr("TIDE_ZONE_PERIODS", 10.0), from = periods * T - 4.0 * T;
+    const double sample = 0.025, from = (periods - 4.0) * T, to = periods * T + 1.0;
     std::vector<waves::Record> measured(xs.size(), waves::Record{sample, sample, {}}), far = measured;
-    std::uint32_t most = start, least = start;
     for (int n = 0; n < static_cast<int>(std::lround(periods * T / sample)); ++n) {
         world.advance(sample);
         for (std::size_t g = 0; g < xs.size(); ++g) {
             measured[g].eta.push_back(world.surfaceHeight(static_cast<float>(xs[g]), static_cast<float>(zs[g])) - d);
             far[g].eta.push_back(sea.elevation(xs[g], zs[g], world.time()));
         }
-        most = std::max(most, world.particles().size());
-        least = std::min(least, world.particles().size());
+        r.most = std::max(r.most, world.particles().size());
+        r.least = std::min(r.least, world.particles().size());
         if (envOr("TIDE_ZONE_VERBOSE", 0.0) > 0.0 && n % 40 == 39)
             std::printf("t %.1f s: %u particles, %llu steps, centre eta %+.4f m (far %+.4f)\n", world.time(), world.particles().size(),
-                        static_cast<unsigned long long>(world.stats().steps), measured[4].eta.back(), far[4].eta.back());
+                        static_cast<unsigned long long>(world.stats().steps), measured[12].eta.back(), far[12].eta.back()),
+                std::fflush(stdout);
     }
-    std::vector<std::complex<double>> amplitude, farAmplitude;
-    for (std::size_t g = 0; g < xs.size(); ++g) {
-        amplitude.push_back(waves::amplitudeAt(waves::window(measured[g], from, periods * T + 1.0), omega));
-        farAmplitude.push_back(waves::amplitudeAt(waves::window(far[g], from, periods * T + 1.0), omega));
-    }
-    const std::vector<double> arrayX(xs.begin(), xs.begin() + corners), arrayZ(zs.begin(), zs.begin() + corners);
-    const PlaneWave wave = beamform(arrayX, arrayZ, {amplitude.begin(), amplitude.begin() + corners}, k);
+    std::vector<double> arrayX(xs.begin(), xs.begin() + seamFrom), arrayZ(zs.begin(), zs.begin() + seamFrom);
+    std::vector<std::complex<double>> arrayA;
     double heightSum = 0.0;
-    for (std::size_t g = 0; g < corners; ++g) heightSum += waves::upCrossings(waves::window(measured[g], from, periods * T + 1.0)).meanHeight();
-    const double height = heightSum / static_cast<double>(corners);
-    auto disturbance = [&](std::size_t g) { return std::abs(amplitude[g] - farAmplitude[g]) / std::abs(farAmplitude[g]); };
-    double cornerSum = 0.0, sideSum = 0.0;
-    for (std::size_t g = corners; g < sides; ++g) cornerSum += disturbance(g) / 4.0;
-    for (std::size_t g = sides; g < seam; ++g) sideSum += disturbance(g) / 4.0;
+    for (std::size_t g = 0; g < seamFrom; ++g) {
+        const waves::Record w = waves::window(measured[g], from, to);
+        arrayA.push_back(waves::amplitudeAt(w, omega));
+        heightSum += waves::upCrossings(w).meanHeight();
+    }
+    r.height = heightSum / static_cast<double>(seamFrom);
+    const PlaneWave wave = beamform(arrayX, arrayZ, arrayA, k);
+    r.direction = wave.directionDegrees;
+    // At the measured wavenumber (the SPH wave's, a few per cent off Airy's: Stokes).
+    const std::vector<std::complex<double>> split =
+        fitPlaneWaves(arrayX, arrayZ, arrayA, wave.k, {direction, 180.0 - direction, -direction, 180.0 + direction});
+    const double incident = std::abs(split[0]);
+    r.fromX = std::abs(split[1]) / incident, r.fromZ = std::abs(split[2]) / incident, r.fromCorner = std::abs(split[3]) / incident;
     double seamSq = 0.0;
     std::size_t seamCount = 0;
-    for (std::size_t g = seam; g < xs.size(); ++g) {
-        const waves::Record m = waves::window(measured[g], from, periods * T + 1.0), f = waves::window(far[g], from, periods * T + 1.0);
+    for (std::size_t g = seamFrom; g < xs.size(); ++g) {
+        const waves::Record m = waves::window(measured[g], from, to), f = waves::window(far[g], from, to);
         for (std::size_t n = 0; n < m.eta.size(); ++n) seamSq += (m.eta[n] - f.eta[n]) * (m.eta[n] - f.eta[n]), ++seamCount;
     }
-    const double seamRms = std::sqrt(seamSq / static_cast<double>(std::max<std::size_t>(1, seamCount)));
-    for (std::size_t g = corners; g < seam; ++g)
-        std::printf("%s gauge (%.2f, %.2f) m: |A - A_far|/|A_far| %.3f, first harmonic %.4f m against %.4f\n",
-                    g < sides ? "corner" : "side  ", xs[g], zs[g], disturbance(g), 2.0 * std::abs(amplitude[g]),
-                    2.0 * std::abs(farAmplitude[g]));
-    std::printf("square %.2f m (zones %.2f m, L %.3f m), %u particles at start (%u..%u), added %llu, removed %llu\n"
-                "centre: direction %.2f deg (sea %.1f), k %.3f (theory %.3f), height %.4f m (%+.1f %%); "
-                "disturbance at the corners %.3f, at the sides %.3f; the seam's RMS(eta - far) %.4f m (%.2f spacings)\n",
-                side, zone, L, start, least, most, static_cast<unsigned long long>(world.stats().oceanAdded),
-                static_cast<unsigned long long>(world.stats().oceanRemoved), wave.directionDegrees, direction, wave.k, k, height,
-                100.0 * (height / H - 1.0), cornerSum, sideSum, seamRms, seamRms / spacing);
-    EXPECT_NEAR(wave.directionDegrees, direction, 3.0);
-    EXPECT_NEAR(height, H, 0.08 * H);
-    EXPECT_LE(cornerSum, sideSum);
-    EXPECT_LE(seamRms, spacing);
+    r.seamRms = std::sqrt(seamSq / static_cast<double>(std::max<std::size_t>(1, seamCount)));
+    std::printf("square %.2f m (zones %.2f m, L %.3f m, %.1f particles per H), %u particles at start (%u..%u), added %llu, removed %llu\n"
+                "centre: direction %.2f deg (sea %.1f), k %.3f (Airy %.3f), height %.4f m (%+.1f %%); reflected from +x %.3f, "
+                "from +z %.3f, from their corner %.3f; the seam's RMS(eta - far) %.4f m (%.2f spacings)\n",
+                side, zone, L, H / spacing, r.start, r.least, r.most, static_cast<unsigned long long>(world.stats().oceanAdded),
+                static_cast<unsigned long long>(world.stats().oceanRemoved), r.direction, direction, wave.k, k, r.height,
+                100.0 * (r.height / H - 1.0), r.fromX, r.fromZ, r.fromCorner, r.seamRms, r.seamRms / spacing);
+    return r;
+}
+
+// Acceptance items 6 and 7 in 3D at a small resolution (6 cm, 1.7 particles per wave height, 6
+// periods; at 7 cm the direction is 4.5° off): the direction holds within 3°, the corner sends back no more than the sides, the
+// seam stays within a spacing, the count bounded. The height needs the benchmark below.
+TEST(OceanZones, ObliqueWavesKeepTheirDirectionThroughAFourSidedNearField) {
+    const float spacing = 0.06f;
+    const ObliqueSquare r = obliqueWavesInASquare(0.1, 1.0, 0.3, 30.0, spacing, 6.0, 1.0);
+    EXPECT_NEAR(r.direction, 30.0, 3.0);
+    EXPECT_LE(r.fromCorner, std::max(r.fromX, r.fromZ));
+    EXPECT_LT(std::max(r.fromX, r.fromZ), 0.1);
+    EXPECT_LE(r.seamRms, spacing);
+    EXPECT_GT(r.least, r.start - r.start / 20);
+    EXPECT_LT(r.most, r.start + r.start / 20);
+}
+
+// Acceptance item 6: regular waves at 30° to x in a square near field open on all four sides
+// (obliqueWavesInASquare): direction within 3°, height within 8 % at the centre, the corner's
+// reflection no larger than the sides'; and item 7 on four sides. A benchmark: at 2.5 cm
+// (4 particles per H, 3.3·10⁵ particles) 19 min on two threads.
+//   TIDE_ZONE_SPACING=0.025 build/bin/test_ocean_zones --gtest_also_run_disabled_tests --gtest_filter='*Oblique*Benchmark*'
+TEST(OceanZones, DISABLED_ObliqueWavesInASquareNearFieldBenchmark) {
+    const double H = envOr("TIDE_ZONE_HEIGHT", 0.1), direction = envOr("TIDE_ZONE_DIRECTION", 30.0);
+    const auto spacing = static_cast<float>(envOr("TIDE_ZONE_SPACING", 0.025));
+    const ObliqueSquare r = obliqueWavesInASquare(H, envOr("TIDE_ZONE_PERIOD", 1.0), envOr("TIDE_ZONE_DEPTH", 0.3), direction,
+                                                  spacing, envOr("TIDE_ZONE_PERIODS", 10.0), envOr("TIDE_ZONE_WIDTH", 1.0));
+    EXPECT_NEAR(r.direction, direction, 3.0);
+    EXPECT_NEAR(r.height, H, 0.08 * H);
+    EXPECT_LE(r.fromCorner, std::max(r.fromX, r.fromZ));
+    EXPECT_LE(r.seamRms, spacing);
 }
 
 }  // namespace

@@ -103,11 +103,32 @@ void reportOcean(const OceanDef& o, const WorldDef& w) {
     else
         std::printf("  zones    %.3g m%s on %s\n", oceanZoneWidth(o, g), o.zoneWidth > 0.0 ? "" : " (one peak wavelength)",
                     sides.c_str());
-    std::printf("  still    water fills the domain to %g m; open sides have no walls (docs/ocean.md)\n", o.depth);
+    const std::uint32_t layers = oceanStillWaterLayers(o.depth, w.particleSpacing);
+    std::printf("  still    water fills the domain to %g m in %u layers of %.4g m; open sides have no walls (docs/ocean.md)\n",
+                o.depth, layers, o.depth / layers);
     // Acceptance item 3 of the ocean's issue asks for at least 10 particles per wave height.
     if (height / spacing < 10.0)
         std::fprintf(stderr, "tide: warning: ocean: %.1f particles per wave height (%g m / %g m): fewer than 10 "
                              "damp the waves; make particle_spacing smaller\n", height / spacing, height, spacing);
+}
+
+/// Warns when the water a block puts in front of a wave maker stands off the depth the paddle
+/// makes its waves for by more than a quarter spacing: a block holds whole cubic cells (a
+/// 0.25 m block at 15 mm holds 16, 0.24 m of water) and the stroke is for `depth`.
+void warnOnWaterBesideThePaddle(const io::Scene& scene, std::size_t index) {
+    const WaveMakerDef& wm = scene.waveMakers[index];
+    const double s = scene.world.particleSpacing, floor = scene.world.domainMin.y;
+    for (std::size_t b = 0; b < scene.blocks.size(); ++b) {
+        const BlockDef& block = scene.blocks[b];
+        const bool atThePaddle = block.min.x <= wm.x + s && block.max.x > wm.x + s && block.min.y <= floor + s;
+        if (!atThePaddle) continue;
+        const double top = floor + std::floor((block.max.y - floor) / s + 1e-3) * s;
+        if (std::abs(top - (floor + wm.depth)) > 0.25 * s)
+            std::fprintf(stderr,
+                         "tide: warning: wavemaker: depth %g m, but blocks[%zu] holds water %g m deep in front of it (whole "
+                         "cells of %g m): the waves are made for the wrong depth; make the depth a whole number of spacings\n",
+                         wm.depth, b, top - floor, s);
+    }
 }
 
 }  // namespace
@@ -178,6 +199,7 @@ int validateCommand(const std::string& file) {
                         wm.x, wm.depth, wm.spectrum.type == WaveSpectrumDef::Type::Jonswap ? "JONSWAP" : "Pierson-Moskowitz",
                         wm.spectrum.significantHeight, wm.spectrum.peakPeriod, wm.spectrum.components, wm.rampTime);
     }
+    for (std::size_t k = 0; k < scene.waveMakers.size(); ++k) warnOnWaterBesideThePaddle(scene, k);
     if (scene.ocean) reportOcean(*scene.ocean, scene.world);
     if (!scene.dampingZones.empty() || !scene.gauges.empty() || !scene.probes.empty())
         std::printf("measuring  %zu damping zone%s, %zu gauge%s, %zu probe%s\n", scene.dampingZones.size(),
