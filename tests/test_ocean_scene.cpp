@@ -127,6 +127,18 @@ TEST(OceanScene, ProblemsNameTheirJsonPath) {
     EXPECT_EQ(one(R"({"depth": 1.05, "waves": {"type": "regular", "height": 0.2, "period": 3}})"),
               "domain.max[1]: the domain's top stands 0.15 m above the ocean's still water, under its crests "
               "(about 0.2 m: the wave height); raise it by 0.05 m or more");
+    // Stokes' order: regular waves only, 1 to 5, and a wave the theory holds.
+    EXPECT_EQ(one(R"({"depth": 0.7, "waves": {"type": "jonswap", "hs": 0.1, "tp": 3, "order": 5}})"),
+              "ocean.waves.order: applies to regular waves (a spectrum is a linear sea)");
+    EXPECT_EQ(one(R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2, "order": 7}})"),
+              "ocean.waves.order: must be >= 1 and <= 5, got 7");
+    EXPECT_EQ(one(R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2, "order": 2.5}})"),
+              "ocean.waves.order: must be a whole number, got 2.5");
+    EXPECT_NE(one(R"({"depth": 0.3, "waves": {"type": "regular", "height": 0.1, "period": 4, "order": 5}})")
+                  .find("ocean.waves.order: 5 (Stokes' theory, Fenton 1985) does not converge"),
+              std::string::npos);
+    EXPECT_TRUE(problemsOf(sceneWith(R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2, "order": 5}})"))
+                    .empty());
 }
 
 TEST(OceanScene, RefusesZonesWiderThanTheRegionAndOpenSidesThatCannotBe) {

@@ -191,12 +191,13 @@ TEST(OceanSea, RegularWaveIsOneComponent) {
     def.waves.height = 0.16;
     def.waves.period = 2.0;
     def.waves.direction = 90.0;  // towards +z
+    def.waves.order = 1;         // Airy's (the default is Stokes' fifth order: tests/test_stokes_wave.cpp)
     const Sea sea = Sea::fromDef(def);
     ASSERT_EQ(sea.components().size(), 1u);
     EXPECT_DOUBLE_EQ(sea.elevation(0.0, 0.0, 0.0), 0.08);  // crest at the origin at t = 0
     EXPECT_NEAR(sea.components()[0].kx, 0.0, 1e-15);
     EXPECT_DOUBLE_EQ(sea.variance(), 0.08 * 0.08 / 2.0);
-    // L = 2π/k on 0.7 m at T = 2 s: 4.85 m (shallow-ish water, kd = 0.91).
+    // L = 2π/k on 0.7 m at T = 2 s: 4.62 m (intermediate depth, kd = 0.95).
     EXPECT_NEAR(oceanPeakWavelength(def), 2.0 * kPi / waveNumber(kPi, 0.7), 1e-12);
     EXPECT_NEAR(repeatPeriod(def), 2.0, 0.0);
     EXPECT_EQ(oceanZoneWidth(def), oceanPeakWavelength(def));  // the default: one wavelength

@@ -313,14 +313,15 @@ TEST(OceanZones, BadOceansAreRefusedNamingTheField) {
 TEST(OceanZones, DISABLED_RegularWaveFromTheZoneAloneAndAbsorbedAtTheFarEnd) {
     const double H = envOr("TIDE_ZONE_HEIGHT", 0.16), T = envOr("TIDE_ZONE_PERIOD", 2.0), d = 0.7, g = 9.81;
     const double omega = 2.0 * std::numbers::pi / T;
-    const double k = ocean::waveNumber(omega, d, g), L = 2.0 * std::numbers::pi / k;
+    OceanDef o = regularOcean(H, T, d, {OceanSide::MinusX, OceanSide::PlusX}, 0.0);
+    o.waves.order = static_cast<int>(envOr("TIDE_ZONE_ORDER", 1));  // Stokes' order of the far field
+    const double L = oceanPeakWavelength(o, g), k = 2.0 * std::numbers::pi / L;
     const float spacing = static_cast<float>(envOr("TIDE_ZONE_SPACING", 0.05));
     const double zone = envOr("TIDE_ZONE_WIDTH", 1.0) * L;    // both zones
     const double gap = envOr("TIDE_ZONE_GAP", 2.0) * L;        // water between them
     const double first = envOr("TIDE_ZONE_GAUGES", 0.5) * L;  // the first gauge from the -x zone
     const double periods = envOr("TIDE_ZONE_PERIODS", 8.0);
     const auto length = static_cast<float>(std::round((2.0 * zone + gap) / spacing) * spacing);
-    OceanDef o = regularOcean(H, T, d, {OceanSide::MinusX, OceanSide::PlusX}, 0.0);
     o.zoneWidth = zone;
     World world = openFlume(spacing, length, o, static_cast<int>(envOr("TIDE_ZONE_THREADS", 0)),
                             static_cast<int>(envOr("TIDE_ZONE_DIMENSIONS", 3)));
@@ -682,7 +683,7 @@ ObliqueSquare obliqueWavesInASquare(double H, double T, double d, double directi
     r.height = heightSum / static_cast<double>(seamFrom);
     const PlaneWave wave = beamform(arrayX, arrayZ, arrayA, k);
     r.direction = wave.directionDegrees;
-    // At the measured wavenumber (the SPH wave's, a few per cent off Airy's: Stokes).
+    // At the measured wavenumber (the SPH wave's, within a few per cent of the sea's).
     const std::vector<std::complex<double>> split =
         fitPlaneWaves(arrayX, arrayZ, arrayA, wave.k, {direction, 180.0 - direction, -direction, 180.0 + direction});
     const double incident = std::abs(split[0]);
@@ -695,7 +696,7 @@ ObliqueSquare obliqueWavesInASquare(double H, double T, double d, double directi
     }
     r.seamRms = std::sqrt(seamSq / static_cast<double>(std::max<std::size_t>(1, seamCount)));
     std::printf("square %.2f m (zones %.2f m, L %.3f m, %.1f particles per H), %u particles at start (%u..%u), added %llu, removed %llu\n"
-                "centre: direction %.2f deg (sea %.1f), k %.3f (Airy %.3f), height %.4f m (%+.1f %%); reflected from +x %.3f, "
+                "centre: direction %.2f deg (sea %.1f), k %.3f (the sea's %.3f), height %.4f m (%+.1f %%); reflected from +x %.3f, "
                 "from +z %.3f, from their corner %.3f; the seam's RMS(eta - far) %.4f m (%.2f spacings)\n",
                 side, zone, L, H / spacing, r.start, r.least, r.most, static_cast<unsigned long long>(world.stats().oceanAdded),
                 static_cast<unsigned long long>(world.stats().oceanRemoved), r.direction, direction, wave.k, k, r.height,

@@ -80,8 +80,11 @@ void reportOcean(const OceanDef& o, const WorldDef& w) {
     const double height = waves.type == OceanWavesDef::Type::Regular ? waves.height : waves.hs;
     const double spacing = w.particleSpacing;
     if (waves.type == OceanWavesDef::Type::Regular) {
-        std::printf("ocean      depth %g m: regular, H %g m, T %g s, towards %g deg\n", o.depth, waves.height,
-                    waves.period, waves.direction);
+        std::printf("ocean      depth %g m: regular, H %g m, T %g s, towards %g deg, %s\n", o.depth, waves.height,
+                    waves.period, waves.direction,
+                    oceanWaveOrder(o, g) == 1
+                        ? (waves.order == 0 ? "linear (Airy: too shallow or steep for Stokes' series)" : "linear (Airy)")
+                        : ("Stokes order " + std::to_string(oceanWaveOrder(o, g)) + " (Fenton 1985)").c_str());
     } else {
         const bool jonswap = waves.type == OceanWavesDef::Type::Jonswap;
         std::printf("ocean      depth %g m: %s, Hs %g m, Tp %g s", o.depth, jonswap ? "JONSWAP" : "Pierson-Moskowitz",

@@ -22,6 +22,11 @@ struct OceanWavesDef {
     Type type = Type::Jonswap;
     double height = 0.0;  ///< regular: H, crest to trough, m
     double period = 0.0;  ///< regular: T, s
+    /// Regular waves: the order of Stokes' theory, 1 (Airy: one sinusoid, a = H/2) to 5
+    /// (Fenton 1985: the wave of height H crest to trough with its bound harmonics and its
+    /// amplitude dispersion, no mean current); 0 picks 5 where its series converges, else 1
+    /// (oceanWaveOrder). Spectra: 0 or 1 (a linear sea).
+    int order = 0;
     double hs = 0.0;      ///< spectra: significant wave height Hm0 = 4 √m0, m
     double tp = 0.0;      ///< spectra: peak period, s
     /// Mean direction the waves travel towards, degrees from +x towards +z, in [−360, 360].
@@ -59,12 +64,16 @@ struct OceanDef {
 /// e.g. "ocean.waves.hs: must be > 0, got -1") if `def` cannot make a sea.
 void validateOcean(const OceanDef& def);
 
+/// The order of the sea's waves: `waves.order`, or for 0 (regular waves) 5 where Stokes'
+/// fifth-order series converges for the wave (ocean::stokesWave accepts it), else 1; spectra 1.
+int oceanWaveOrder(const OceanDef& def, double g = 9.81);
+
 /// The JONSWAP γ a sea uses: `waves.gamma`, or DNV-RP-C205's from Tp/√Hs when it is unset
 /// (1 for Pierson–Moskowitz and regular waves).
 double oceanGamma(const OceanWavesDef& waves);
 
 /// The wavelength 2π/k at the peak period (regular waves: at the period) on the ocean's depth
-/// (ω² = g k tanh kd), m. Validates `def` first.
+/// (ω² = g k tanh kd; a Stokes wave's own k), m. Validates `def` first.
 double oceanPeakWavelength(const OceanDef& def, double g = 9.81);
 
 /// The coupling zones' width: `zoneWidth`, or one peak wavelength when it is 0, m.

@@ -9,6 +9,7 @@
 
 #include "ocean/dispersion.hpp"
 #include "ocean/spectrum.hpp"
+#include "ocean/stokes_wave_fenton1985.hpp"
 
 namespace tide {
 
@@ -33,7 +34,7 @@ void requireInRange(const std::string& field, double v, double lo, double hi) {
     }
 }
 
-void validateWaves(const OceanWavesDef& w) {
+void validateWaves(const OceanWavesDef& w, double depth) {
     const std::string path = "ocean.waves.";
     requireInRange(path + "direction", w.direction, -360.0, 360.0);
     if (w.type == OceanWavesDef::Type::Regular) {
@@ -41,8 +42,12 @@ void validateWaves(const OceanWavesDef& w) {
         requirePositive(path + "period", w.period);
         if (w.spreading) refuse(path + "spreading", "applies to spectra, not to regular waves", *w.spreading);
         if (w.gamma) refuse(path + "gamma", "applies to a jonswap spectrum, not to regular waves", *w.gamma);
+        requireInRange(path + "order", w.order, 0, 5);
+        // The wave must be one Stokes' theory holds (refuses naming the order).
+        if (w.order > 1) (void)ocean::stokesWave(w.height, w.period, depth, ocean::kGravity, w.order, "ocean.waves.order");
         return;
     }
+    if (w.order > 1 || w.order < 0) refuse(path + "order", "applies to regular waves (a spectrum is linear: 1)", w.order);
     requirePositive(path + "hs", w.hs);
     requirePositive(path + "tp", w.tp);
     if (w.gamma) {
@@ -64,13 +69,26 @@ void validateWaves(const OceanWavesDef& w) {
 
 void validateOcean(const OceanDef& def) {
     requirePositive("ocean.depth", def.depth);
-    validateWaves(def.waves);
+    validateWaves(def.waves, def.depth);
     if (!(def.zoneWidth >= 0.0) || !std::isfinite(def.zoneWidth))
         refuse("ocean.zone_width", "must be >= 0 (0: one peak wavelength)", def.zoneWidth);
     for (std::size_t i = 0; i < def.openSides.size(); ++i)
         for (std::size_t j = 0; j < i; ++j)
             if (def.openSides[i] == def.openSides[j])
                 refuse("ocean.open_sides[" + std::to_string(i) + "]", "is listed twice", oceanSideName(def.openSides[i]));
+}
+
+int oceanWaveOrder(const OceanDef& def, double g) {
+    validateOcean(def);
+    const OceanWavesDef& w = def.waves;
+    if (w.type != OceanWavesDef::Type::Regular) return 1;
+    if (w.order > 0) return w.order;
+    try {
+        (void)ocean::stokesWave(w.height, w.period, def.depth, g, 5);
+        return 5;
+    } catch (const std::invalid_argument&) {
+        return 1;  // too shallow (or too steep) for Stokes' series: Airy's wave
+    }
 }
 
 double oceanGamma(const OceanWavesDef& waves) {
@@ -82,6 +100,8 @@ double oceanPeakWavelength(const OceanDef& def, double g) {
     validateOcean(def);
     const double period = def.waves.type == OceanWavesDef::Type::Regular ? def.waves.period : def.waves.tp;
     const double twoPi = 2.0 * std::numbers::pi;
+    const int order = oceanWaveOrder(def, g);
+    if (order > 1) return twoPi / ocean::stokesWave(def.waves.height, period, def.depth, g, order, "ocean.waves.order").k;
     return twoPi / ocean::waveNumber(twoPi / period, def.depth, g);
 }
 

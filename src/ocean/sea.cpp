@@ -1,5 +1,6 @@
 #include "ocean/sea.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -10,6 +11,7 @@
 
 #include "core/parallel.hpp"
 #include "ocean/spectrum.hpp"
+#include "ocean/stokes_wave_fenton1985.hpp"
 #include "ocean/uniform_random.hpp"
 
 namespace tide::ocean {
@@ -43,8 +45,19 @@ std::vector<WaveComponent> discretise(const OceanDef& def, double g, SpectrumRan
     const double mean = w.direction * kPi / 180.0;
     if (w.type == OceanWavesDef::Type::Regular) {
         const double omega = 2.0 * kPi / w.period;
-        const double k = waveNumber(omega, def.depth, g);
-        return {WaveComponent{0.5 * w.height, omega, k * std::cos(mean), k * std::sin(mean), 0.0}};
+        const int order = oceanWaveOrder(def, g);
+        if (order == 1) {
+            const double k = waveNumber(omega, def.depth, g);
+            return {WaveComponent{0.5 * w.height, omega, k * std::cos(mean), k * std::sin(mean), 0.0}};
+        }
+        const StokesWave stokes = stokesWave(w.height, w.period, def.depth, g, order, "ocean.waves.order");
+        std::vector<WaveComponent> harmonics;
+        for (int j = 1; j <= order; ++j) {
+            const double k = j * stokes.k;
+            harmonics.push_back(WaveComponent{stokes.elevation[j - 1], j * omega, k * std::cos(mean), k * std::sin(mean), 0.0,
+                                              true, stokes.velocity[j - 1]});
+        }
+        return harmonics;
     }
     if (!(range.low > 0.0 && range.high > range.low))
         throw std::invalid_argument("ocean::discretise: the spectrum range must have 0 < low < high");
@@ -95,15 +108,20 @@ Sea::Sea(std::vector<WaveComponent> components, double depth, double g, double d
         const double k = std::hypot(c.kx, c.kz);
         const bool dispersive = k > 0.0 && std::abs(c.omega * c.omega - g * k * std::tanh(k * depth)) <=
                                                1e-9 * c.omega * c.omega;
-        if (!dispersive || !(c.amplitude >= 0.0) || !std::isfinite(c.phase)) {
+        const bool boundOk = c.bound && k > 0.0 && std::isfinite(k) && c.omega > 0.0 && std::isfinite(c.omega) &&
+                             std::isfinite(c.velocity);
+        if (!(c.bound ? boundOk : dispersive) || !(c.amplitude >= 0.0) || !std::isfinite(c.phase)) {
             std::ostringstream message;
             message << "ocean::Sea: component " << i << " (a " << c.amplitude << ", omega " << c.omega << ", k ("
-                    << c.kx << ", " << c.kz << ")) needs a >= 0 and omega^2 = g k tanh(k d)";
+                    << c.kx << ", " << c.kz << ")) needs a >= 0 and "
+                    << (c.bound ? "finite k > 0, omega > 0 and velocity" : "omega^2 = g k tanh(k d)");
             throw std::invalid_argument(message.str());
         }
+        if (c.bound) kinematics_ = Stretching::Truncated;
         const double decay = std::exp(-2.0 * k * depth);
         const double overSinh = 1.0 / -std::expm1(-2.0 * k * depth);
-        profiles_.push_back(Profile{k, c.kx / k, c.kz / k, decay, (1.0 + decay) * overSinh, overSinh, 1.0 / (1.0 + decay)});
+        profiles_.push_back(Profile{k, c.kx / k, c.kz / k, decay, (1.0 + decay) * overSinh, overSinh,
+                                    c.bound ? c.velocity : c.amplitude * c.omega});
     }
 }
 
@@ -132,13 +150,14 @@ glm::dvec2 Sea::horizontalDisplacement(double x, double z, double t) const {
     for (std::size_t i = 0; i < components_.size(); ++i) {
         const WaveComponent& c = components_[i];
         const Profile& p = profiles_[i];
-        const double s = -c.amplitude * p.coth * std::sin(phaseAt(c, x, z, t));
+        const double s = -p.velocity / c.omega * p.coth * std::sin(phaseAt(c, x, z, t));
         d += glm::dvec2(s * p.ux, s * p.uz);
     }
     return d;
 }
 
-WaterSample Sea::sample(const glm::dvec3& point, double t, Stretching stretching) const {
+WaterSample Sea::sample(const glm::dvec3& point, double t, std::optional<Stretching> how) const {
+    const Stretching stretching = how.value_or(kinematics_);
     // Each phase's cosine and sine once: η needs them all before the stretched height is known.
     thread_local std::vector<double> trig;
     trig.resize(2 * components_.size());
@@ -156,8 +175,9 @@ WaterSample Sea::sample(const glm::dvec3& point, double t, Stretching stretching
         y = out.wet ? depth_ * (point.y + depth_) / column - depth_ : 0.0;
     } else {
         out.wet = point.y <= out.elevation;
+        if (stretching == Stretching::Truncated) y = std::min(point.y, out.elevation);
     }
-    double dynamic = 0.0;  // Σ a cosh(k(y'+d))/cosh(kd) cos θ
+    double dynamic = 0.0;  // −∂φ/∂t / g: Σ (V ω/(g k)) cosh(k(y'+d))/sinh(kd) cos θ (a cosh/cosh for a free wave)
     for (std::size_t i = 0; i < components_.size(); ++i) {
         const WaveComponent& c = components_[i];
         const Profile& p = profiles_[i];
@@ -165,20 +185,20 @@ WaterSample Sea::sample(const glm::dvec3& point, double t, Stretching stretching
         // e^{−2kd}/e^{ky} (0 where e^{ky} underflows: then both terms are negligible).
         const double up = std::exp(p.k * y);
         const double down = up > 0.0 ? p.decay / up : 0.0;
-        const double horizontal = c.amplitude * c.omega * (up + down) * p.overSinh * trig[2 * i];
+        const double horizontal = p.velocity * (up + down) * p.overSinh * trig[2 * i];
         out.velocity.x += horizontal * p.ux;
         out.velocity.z += horizontal * p.uz;
-        out.velocity.y += c.amplitude * c.omega * (up - down) * p.overSinh * trig[2 * i + 1];
-        dynamic += c.amplitude * (up + down) * p.overCosh * trig[2 * i];
+        out.velocity.y += p.velocity * (up - down) * p.overSinh * trig[2 * i + 1];
+        dynamic += p.velocity * c.omega / (g_ * p.k) * (up + down) * p.overSinh * trig[2 * i];
     }
-    // Wheeler: the air above the surface is at atmospheric pressure. The linear field keeps
-    // its formula everywhere (its surface condition holds at y = 0, not at η).
+    // Wheeler and Truncated: the air above the surface is at atmospheric pressure. The linear
+    // field keeps its formula everywhere (its surface condition holds at y = 0, not at η).
     out.pressure = out.wet || stretching == Stretching::None ? density_ * g_ * (dynamic - point.y) : 0.0;
     return out;
 }
 
 void Sea::sample(std::span<const glm::dvec3> points, double t, std::span<WaterSample> out, int threads,
-                 Stretching stretching) const {
+                 std::optional<Stretching> stretching) const {
     if (out.size() != points.size())
         throw std::invalid_argument("ocean::Sea::sample: " + std::to_string(points.size()) + " points but " +
                                     std::to_string(out.size()) + " results");

@@ -23,6 +23,7 @@
 /// satisfies the linear surface conditions at y = 0.
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -35,20 +36,27 @@
 
 namespace tide::ocean {
 
-/// One linear wave: η = a cos(kx x + kz z − ω t + φ). ω must satisfy the dispersion relation
-/// on the sea's depth.
+/// One wave: η = a cos(kx x + kz z − ω t + φ). A free linear wave's ω satisfies the dispersion
+/// relation on the sea's depth and its velocity amplitude is a ω; a bound harmonic of a
+/// nonlinear wave (ocean/stokes_wave_fenton1985.hpp) has its own ω and `velocity` V, in
+/// u_h = V cosh(k(y+d))/sinh(kd) cos θ, v = V sinh(k(y+d))/sinh(kd) sin θ.
 struct WaveComponent {
     double amplitude = 0.0;  ///< a, m
     double omega = 0.0;      ///< ω, rad/s
     double kx = 0.0;         ///< wave vector along x, rad/m
     double kz = 0.0;         ///< wave vector along z, rad/m
     double phase = 0.0;      ///< φ, rad
+    bool bound = false;      ///< a harmonic of a nonlinear wave: ω and `velocity` as given
+    double velocity = 0.0;   ///< V of a bound harmonic, m/s (a free wave's is a ω)
 };
 
 /// How kinematics are evaluated away from still water.
 enum class Stretching {
     None,     ///< the linear field at the point itself (grows exponentially above y = 0)
     Wheeler,  ///< Wheeler 1970: the column from the floor to η mapped onto the floor to 0
+    /// The field at the point itself up to the surface, the surface's above it: a Stokes
+    /// wave's series holds up to its own surface (Fenton 1985), so it needs no stretching.
+    Truncated,
 };
 
 /// The water at a point and time.
@@ -68,7 +76,9 @@ struct SpectrumRange {
 };
 
 /// The components of an ocean's sea state (validated first: std::invalid_argument).
-/// Regular waves: one component, a = H/2, crest at the origin at t = 0.
+/// Regular waves: one component, a = H/2, crest at the origin at t = 0; of order n > 1
+/// (oceanWaveOrder), the Stokes wave of that order (stokesWave, c_E = 0) as n bound harmonics
+/// at jk, jω, the crest at the origin.
 /// Spectra: N = components × directions components on a comb of frequencies
 /// ω_n = (n0 + n + ½) δω, δω = (high − low) ωp / N, n0 = round(low ωp/δω), each carrying the
 /// variance a_n²/2 = S(ω_n) δω (S the JONSWAP or Pierson–Moskowitz spectrum; midpoint rule).
@@ -82,11 +92,13 @@ std::vector<WaveComponent> discretise(const OceanDef& def, double g = kGravity, 
 /// The time after which discretise(def)'s sea repeats exactly: T (regular) or 4π/δω, s.
 double repeatPeriod(const OceanDef& def, SpectrumRange range = {});
 
-/// A sea of linear wave components on depth d, summed directly.
+/// A sea of wave components on depth d, summed directly: free linear waves, or the bound
+/// harmonics of a Stokes wave. Its pressure is the linearised Bernoulli's, −ρ ∂φ/∂t − ρ g y
+/// (for a Stokes wave without its ½ρ|u|²).
 class Sea {
 public:
-    /// Throws std::invalid_argument for a depth, g or density ≤ 0, or a component whose ω is
-    /// not that of its wave vector (relative 1e-9) or whose amplitude is negative.
+    /// Throws std::invalid_argument for a depth, g or density ≤ 0, a free component whose ω is
+    /// not that of its wave vector (relative 1e-9), or one whose amplitude is negative.
     Sea(std::vector<WaveComponent> components, double depth, double g = kGravity, double density = 1000.0);
     /// The sea of an ocean definition: discretise(def, g) on def.depth.
     static Sea fromDef(const OceanDef& def, double g = kGravity, double density = 1000.0);
@@ -100,12 +112,18 @@ public:
     /// "choppy" displacement, eq. 29, with its λ = −1 and finite depth). The surface point
     /// (x, η, z) of a choppy mesh moves to (x + D_x, η, z + D_z).
     [[nodiscard]] glm::dvec2 horizontalDisplacement(double x, double z, double t) const;
-    /// Velocity and pressure at `point` (x, y, z), time t.
-    [[nodiscard]] WaterSample sample(const glm::dvec3& point, double t, Stretching stretching = Stretching::Wheeler) const;
+    /// Velocity and pressure at `point` (x, y, z), time t; by default with the sea's own
+    /// kinematics().
+    [[nodiscard]] WaterSample sample(const glm::dvec3& point, double t, std::optional<Stretching> stretching = {}) const;
     /// sample() at every point, on `threads` threads (parallelFor: the same results for any
     /// count). `out` must have the size of `points` (else std::invalid_argument).
     void sample(std::span<const glm::dvec3> points, double t, std::span<WaterSample> out, int threads = 1,
-                Stretching stretching = Stretching::Wheeler) const;
+                std::optional<Stretching> stretching = {}) const;
+    /// How the sea's velocity is evaluated away from still water: Wheeler for linear waves,
+    /// Truncated for a Stokes wave (any bound component).
+    [[nodiscard]] Stretching kinematics() const { return kinematics_; }
+    /// V of component i (a ω for a free wave), m/s.
+    [[nodiscard]] double velocityAmplitude(std::size_t i) const { return profiles_[i].velocity; }
 
     /// Σ a²/2: the variance of η (m²) over space or, with distinct frequencies, over time.
     [[nodiscard]] double variance() const;
@@ -122,13 +140,14 @@ private:
         double decay;    // e^(−2kd)
         double coth;     // coth(kd)
         double overSinh; // e^{kd}/sinh(kd) = 1/(1 − e^(−2kd))
-        double overCosh; // e^{kd}/cosh(kd) = 1/(1 + e^(−2kd))
+        double velocity; // V
     };
     [[nodiscard]] double phaseAt(const WaveComponent& c, double x, double z, double t) const;
 
     std::vector<WaveComponent> components_;
     std::vector<Profile> profiles_;
     double depth_, g_, density_;
+    Stretching kinematics_ = Stretching::Wheeler;
 };
 
 }  // namespace tide::ocean

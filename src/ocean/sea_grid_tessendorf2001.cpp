@@ -42,7 +42,8 @@ Sea snapToGrid(const Sea& sea, const GridSpec& grid) {
         if ((mx == 0 && mz == 0) || !interiorIndex(mx, grid.pointsX) || !interiorIndex(mz, grid.pointsZ)) continue;
         c.kx = kTwoPi * static_cast<double>(mx) / grid.lengthX;
         c.kz = kTwoPi * static_cast<double>(mz) / grid.lengthZ;
-        c.omega = angularFrequency(std::hypot(c.kx, c.kz), sea.depth(), sea.gravity());
+        // A Stokes wave's bound harmonics keep their ω (j times the first's).
+        if (!c.bound) c.omega = angularFrequency(std::hypot(c.kx, c.kz), sea.depth(), sea.gravity());
         snapped.push_back(c);
     }
     return Sea(std::move(snapped), sea.depth(), sea.gravity(), sea.density());
@@ -110,12 +111,13 @@ SeaGrid::SeaGrid(const Sea& sea, GridSpec grid) : grid_(grid) {
         // θ = k·(x − origin) + ψ, ψ = φ + k·origin − ωt (Tessendorf 2001 eq. 19 and 29).
         const double k = std::hypot(c.kx, c.kz);
         const double coth = 1.0 / std::tanh(k * d);
-        const double a = c.amplitude, aw = c.amplitude * c.omega;
+        // aw: the velocity amplitude V (a ω for a free wave); ad: the displacement's, V/ω.
+        const double a = c.amplitude, aw = sea.velocityAmplitude(n), ad = aw / c.omega;
         const double ux = c.kx / k, uz = c.kz / k;
         using C = std::complex<double>;
         const C pairs[3][2] = {
             {C(a, 0.0) / 2.0, C(0.0, -aw) / 2.0},                            // η (cos), v (sin)
-            {C(0.0, a * coth * ux) / 2.0, C(0.0, a * coth * uz) / 2.0},     // D = −a coth sin θ k̂
+            {C(0.0, ad * coth * ux) / 2.0, C(0.0, ad * coth * uz) / 2.0},   // D = −(V/ω) coth sin θ k̂
             {C(aw * coth * ux, 0.0) / 2.0, C(aw * coth * uz, 0.0) / 2.0},   // u, w (cos)
         };
         const C rotation = std::polar(1.0, c.phase + c.kx * grid_.origin.x + c.kz * grid_.origin.y);

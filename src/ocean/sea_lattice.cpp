@@ -30,7 +30,8 @@ void accumulate(float* __restrict sum, const float* __restrict profile, float fa
 }  // namespace
 
 SeaLattice::SeaLattice(const Sea& sea, LatticeSpec spec)
-    : spec_(std::move(spec)), depth_(sea.depth()), time_(std::numeric_limits<double>::quiet_NaN()) {
+    : spec_(std::move(spec)), depth_(sea.depth()), kinematics_(sea.kinematics()),
+      time_(std::numeric_limits<double>::quiet_NaN()) {
     const auto columns = static_cast<std::size_t>(std::max(spec_.columnsX, 0)) * static_cast<std::size_t>(std::max(spec_.columnsZ, 0));
     if (!(spec_.step > 0.0 && std::isfinite(spec_.step)) || spec_.columnsX < 4 || spec_.columnsZ < 4 ||
         spec_.levels < 2 || !(spec_.used.empty() || spec_.used.size() == columns)) {
@@ -44,7 +45,12 @@ SeaLattice::SeaLattice(const Sea& sea, LatticeSpec spec)
     levelCount_ = spec_.levels + 3;
     components_ = sea.components().size();
     const std::size_t n = components_;
-    const double dy = depth_ / spec_.levels;
+    // Wheeler: levels over the stretched column −d … 0. Truncated (a Stokes wave): over the
+    // column itself, from the floor to the highest crest the components can make.
+    if (kinematics_ == Stretching::Truncated)
+        for (const WaveComponent& w : sea.components()) top_ += w.amplitude;
+    levelStep_ = (depth_ + top_) / spec_.levels;
+    const double dy = levelStep_;
     cosX_.resize(static_cast<std::size_t>(spec_.columnsX) * n);
     sinX_.resize(cosX_.size());
     cosZ_.resize(static_cast<std::size_t>(spec_.columnsZ) * n);
@@ -74,11 +80,11 @@ SeaLattice::SeaLattice(const Sea& sea, LatticeSpec spec)
         for (int l = 0; l < levelCount_; ++l) {
             const double y = -depth_ + (l - 1) * dy;
             const double up = std::exp(k * y), down = decay / up;
-            const double horizontal = w.amplitude * w.omega * (up + down) * overSinh;
+            const double horizontal = sea.velocityAmplitude(c) * (up + down) * overSinh;
             const std::size_t at = c * static_cast<std::size_t>(levelCount_) + static_cast<std::size_t>(l);
             profileX_[at] = static_cast<float>(horizontal * w.kx / k);
             profileZ_[at] = static_cast<float>(horizontal * w.kz / k);
-            profileY_[at] = static_cast<float>(w.amplitude * w.omega * (up - down) * overSinh);
+            profileY_[at] = static_cast<float>(sea.velocityAmplitude(c) * (up - down) * overSinh);
         }
     }
     slot_.assign(columns, -1);
@@ -203,11 +209,15 @@ glm::dvec3 SeaLattice::velocity(const glm::dvec3& point) const {
             slots[b][a] = slotAt(sx.first + a, sz.first + b);
             if (slots[b][a] >= 0) eta += sz.w[b] * sx.w[a] * elevation_[static_cast<std::size_t>(slots[b][a])];
         }
-    // Wheeler 1970 as Sea::sample: the column floor..η onto floor..0; dry points the surface's.
-    const double column = depth_ + eta;
-    const bool wet = point.y <= eta && column > 0.0;
-    const double stretched = wet ? std::max(depth_ * (point.y + depth_) / column - depth_, -depth_) : 0.0;
-    const double u = (stretched + depth_) / (depth_ / spec_.levels) + 1.0;  // level index (level −1 at 0)
+    // As Sea::sample: Wheeler 1970 maps the column floor..η onto floor..0; Truncated reads the
+    // point itself up to η. Dry points take the surface's velocity.
+    double y = std::clamp(std::min(point.y, eta), -depth_, top_);
+    if (kinematics_ != Stretching::Truncated) {
+        const double column = depth_ + eta;
+        const bool wet = point.y <= eta && column > 0.0;
+        y = wet ? std::max(depth_ * (point.y + depth_) / column - depth_, -depth_) : 0.0;
+    }
+    const double u = (y + depth_) / levelStep_ + 1.0;  // level index (level −1 at 0)
     const int cell = std::min(static_cast<int>(u), spec_.levels);  // u ≥ 1
     double wy[4];
     catmullRom(u - cell, wy);

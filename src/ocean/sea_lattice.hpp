@@ -9,7 +9,8 @@
 /// surface, so the cubic interpolation needs no one-sided stencil there; the linear profiles
 /// cosh/sinh continue analytically), the velocity of ocean/sea.hpp. In stretched coordinates
 /// the profiles do not depend on η (Wheeler 1970), so the lattice is fixed in space and only
-/// its values change with time.
+/// its values change with time. A Stokes wave (Sea::kinematics() Truncated) is read
+/// unstretched: its levels run from the floor to the highest crest, Σ a, instead.
 ///
 /// The direct sum at a column is cheap: the phase factor e^{i(kx x + kz z)} is the product of
 /// tables along x and z (no transcendental per column), times e^{i(φ − ωt)} once per
@@ -76,6 +77,9 @@ private:
 
     LatticeSpec spec_;
     double depth_;
+    Stretching kinematics_;  // the sea's: Wheeler, or Truncated for a Stokes wave
+    double top_ = 0.0;       // the highest level's y above still water (Truncated), m
+    double levelStep_ = 0.0; // between levels, m
     int levelCount_;  // L + 3
     std::size_t components_;
     // Per component: amplitude, ω, phase; tables e^{i kx x_i} (columnsX × N), e^{i kz z_j}.

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -26,22 +27,26 @@ void sampleSurface(const Sea& sea, std::span<const glm::dvec2> rest, std::span<c
         throw std::invalid_argument("sampleSurface: rest, spacing and out must have the same size");
     const auto& components = sea.components();
     const double d = sea.depth();
+    // The displacement's amplitude V/ω per component (a for a free wave).
+    std::vector<double> moving(components.size());
+    for (std::size_t n = 0; n < components.size(); ++n) moving[n] = sea.velocityAmplitude(n) / components[n].omega;
     parallelFor(static_cast<std::uint32_t>(rest.size()), threads, [&](std::uint32_t i) {
         const glm::dvec2 x = rest[i];
         double eta = 0.0, slopeX = 0.0, slopeZ = 0.0;
         glm::dvec2 shift(0.0);
-        for (const WaveComponent& c : components) {
+        for (std::size_t n = 0; n < components.size(); ++n) {
+            const WaveComponent& c = components[n];
             const double k = std::hypot(c.kx, c.kz);
-            const double a = c.amplitude * detailWeight(k, spacing[i]);
+            const double weight = detailWeight(k, spacing[i]), a = c.amplitude * weight;
             if (a == 0.0 || k == 0.0) continue;
             const double theta = c.kx * x.x + c.kz * x.y - c.omega * sampling.time + c.phase;
             const double cosTheta = std::cos(theta), sinTheta = std::sin(theta);
             eta += a * cosTheta;  // Sea::elevation
             slopeX -= a * c.kx * sinTheta;
             slopeZ -= a * c.kz * sinTheta;
-            // Sea::horizontalDisplacement: −a coth(kd) sin θ k/|k|
+            // Sea::horizontalDisplacement: −(V/ω) coth(kd) sin θ k/|k|
             const double coth = 1.0 / std::tanh(k * d);
-            shift -= (a * coth * sinTheta / k) * glm::dvec2(c.kx, c.kz);
+            shift -= (moving[n] * weight * coth * sinTheta / k) * glm::dvec2(c.kx, c.kz);
         }
         const double r = sampling.ramp;
         const glm::dvec2 moved = sampling.choppy ? x + r * shift : x;
