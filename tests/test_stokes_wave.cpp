@@ -14,6 +14,7 @@
 
 #include "ocean/dispersion.hpp"
 #include "ocean/sea.hpp"
+#include "ocean/sea_grid_tessendorf2001.hpp"
 #include "ocean/sea_lattice.hpp"
 #include "ocean/stokes_wave_fenton1985.hpp"
 
@@ -161,6 +162,36 @@ TEST(StokesWave, TheLatticeHoldsTheStokesWaveUpToItsCrests) {
         }
     }
     EXPECT_LT(std::sqrt(err / scale), 5e-3);
+}
+
+TEST(StokesWave, OnTheFftGridItsHarmonicsStayLockedToTheFirst) {
+    // The renderer's grid (Tessendorf 2001) holds a Stokes sea as the direct sum of its snapped
+    // components: the harmonics at j times the first's grid vector, with their own ω and V.
+    const Sea sea = Sea::fromDef(stokesOcean(0.16, 2.0, 0.7, 5, 20.0));
+    GridSpec grid;
+    grid.lengthX = 41.0;
+    grid.lengthZ = 37.0;
+    grid.pointsX = 128;
+    grid.pointsZ = 128;
+    const Sea snapped = snapToGrid(sea, grid);
+    ASSERT_EQ(snapped.components().size(), 5u);
+    const WaveComponent& first = snapped.components()[0];
+    for (std::size_t j = 1; j < 5; ++j) {
+        EXPECT_NEAR(snapped.components()[j].kx, (j + 1) * first.kx, 1e-12);
+        EXPECT_NEAR(snapped.components()[j].kz, (j + 1) * first.kz, 1e-12);
+        EXPECT_EQ(snapped.components()[j].omega, sea.components()[j].omega);
+    }
+    SeaGrid fft(snapped, grid);
+    fft.update(0.7);
+    double worst = 0.0;
+    for (int j = 0; j < 128; j += 9)
+        for (int i = 0; i < 128; i += 7) {
+            const glm::dvec2 x = fft.position(i, j);
+            const WaterSample w = snapped.sample({x.x, 0.0, x.y}, 0.7, Stretching::None);
+            worst = std::max({worst, std::abs(fft.elevation()[j * 128 + i] - w.elevation),
+                              std::abs(fft.velocityX()[j * 128 + i] - w.velocity.x)});
+        }
+    EXPECT_LT(worst, 1e-9);
 }
 
 TEST(StokesWave, TheDefaultOrderIsFiveWhereTheSeriesConverges) {

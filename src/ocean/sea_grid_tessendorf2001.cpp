@@ -36,9 +36,19 @@ bool interiorIndex(long m, int points) { return 2 * std::abs(m) < points; }
 Sea snapToGrid(const Sea& sea, const GridSpec& grid) {
     checkGrid(grid);
     std::vector<WaveComponent> snapped;
+    // A Stokes wave's harmonics go to j times its first harmonic's grid vector, so they stay
+    // locked to it (rounding each alone could put the second at 21 bins when the first is at 10).
+    long firstX = 0, firstZ = 0;
+    double firstK = 0.0;
     for (WaveComponent c : sea.components()) {
-        const long mx = std::lround(c.kx * grid.lengthX / kTwoPi);
-        const long mz = std::lround(c.kz * grid.lengthZ / kTwoPi);
+        long mx = std::lround(c.kx * grid.lengthX / kTwoPi);
+        long mz = std::lround(c.kz * grid.lengthZ / kTwoPi);
+        if (c.bound && firstK == 0.0) {
+            firstX = mx, firstZ = mz, firstK = std::hypot(c.kx, c.kz);
+        } else if (c.bound) {
+            const long j = std::lround(std::hypot(c.kx, c.kz) / firstK);
+            mx = j * firstX, mz = j * firstZ;
+        }
         if ((mx == 0 && mz == 0) || !interiorIndex(mx, grid.pointsX) || !interiorIndex(mz, grid.pointsZ)) continue;
         c.kx = kTwoPi * static_cast<double>(mx) / grid.lengthX;
         c.kz = kTwoPi * static_cast<double>(mz) / grid.lengthZ;
