@@ -66,11 +66,14 @@ TEST(FarFieldMesh, CoversTheSeaAroundTheNearFieldAndNothingOverIt) {
     EXPECT_EQ(facingDown, 0);
     EXPECT_EQ(ring, 2 * (15 + 8));
     EXPECT_LT(worstRing, 1e-5);  // float positions
-    // The rest of the sea reaches the wave's crest and trough (a point's height is η at its rest point).
+    // The rest of the sea reaches the wave's crest and trough (a point's height is η at its rest
+    // point): H = 0.1 m apart, the crest higher than the trough is deep (a Stokes wave's).
     double highest = -1.0, lowest = 1.0;
     for (const glm::vec3& v : mesh.vertices) highest = std::max(highest, double(v.y)), lowest = std::min(lowest, double(v.y));
-    EXPECT_NEAR(highest - 0.3, 0.05, 0.002);
-    EXPECT_NEAR(lowest - 0.3, -0.05, 0.002);
+    const double crest = sea.elevation(0.0, 0.0, 0.0), trough = crest - 0.1;
+    EXPECT_GT(crest, 0.052);
+    EXPECT_NEAR(highest - 0.3, crest, 0.002);
+    EXPECT_NEAR(lowest - 0.3, trough, 0.002);
 }
 
 TEST(FarFieldMesh, FollowsTheRampAndRefusesBadSizesNamingThem) {

@@ -139,6 +139,13 @@ TEST(OceanScene, ProblemsNameTheirJsonPath) {
               std::string::npos);
     EXPECT_TRUE(problemsOf(sceneWith(R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2, "order": 5}})"))
                     .empty());
+    EXPECT_EQ(one(R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2, "mean_current": "drift"}})"),
+              "ocean.waves.mean_current: must be \"return\" or \"none\", got \"drift\"");
+    EXPECT_EQ(one(R"({"depth": 0.7, "waves": {"type": "jonswap", "hs": 0.1, "tp": 3, "mean_current": "none"}})"),
+              "ocean.waves.mean_current: applies to regular waves (a spectrum is a linear sea)");
+    EXPECT_EQ(parse(sceneWith(R"({"depth": 0.7, "waves": {"type": "regular", "height": 0.16, "period": 2, "mean_current": "return"}})"))
+                  .ocean->waves.meanCurrent,
+              OceanWavesDef::MeanCurrent::Return);
 }
 
 TEST(OceanScene, RefusesZonesWiderThanTheRegionAndOpenSidesThatCannotBe) {
@@ -296,7 +303,10 @@ TEST(OceanScene, ValidateReportsTheWavesAndWarnsWhenTooCoarse) {
 
     const tide::testing::Result fine = tide::testing::run(std::string(TIDE_BIN) + " validate " + write("fine.json", 0.01));
     EXPECT_EQ(fine.exit, 0) << fine.output;
-    EXPECT_NE(fine.output.find("ocean      depth 0.7 m: regular, H 0.16 m, T 2 s, towards 30 deg"), std::string::npos) << fine.output;
+    EXPECT_NE(fine.output.find("ocean      depth 0.7 m: regular, H 0.16 m, T 2 s, towards 30 deg, Stokes order 5 (Fenton 1985), "
+                               "no mean current"),
+              std::string::npos)
+        << fine.output;
     EXPECT_NE(fine.output.find(wavelength), std::string::npos) << fine.output;
     EXPECT_NE(fine.output.find("16.0 particles per wave height"), std::string::npos) << fine.output;
     EXPECT_NE(fine.output.find("zones    1.5 m on -x, +z"), std::string::npos) << fine.output;

@@ -26,7 +26,8 @@ using namespace tide::ocean;
 constexpr double kPi = std::numbers::pi;
 constexpr double g = kGravity;
 
-OceanDef stokesOcean(double height, double period, double depth, int order, double direction = 0.0) {
+OceanDef stokesOcean(double height, double period, double depth, int order, double direction = 0.0,
+                     OceanWavesDef::MeanCurrent current = OceanWavesDef::MeanCurrent::None) {
     OceanDef o;
     o.depth = depth;
     o.waves.type = OceanWavesDef::Type::Regular;
@@ -34,6 +35,7 @@ OceanDef stokesOcean(double height, double period, double depth, int order, doub
     o.waves.period = period;
     o.waves.order = order;
     o.waves.direction = direction;
+    o.waves.meanCurrent = current;
     return o;
 }
 
@@ -77,7 +79,7 @@ TEST(StokesWave, OrderOneIsAirysWave) {
 TEST(StokesWave, DeepWaterCelerityIsStokesClassicalOne) {
     // Third order in deep water: c = c0 (1 + ε²/2), ε = ka (Stokes 1847; Fenton's C2/C0 → 1/2).
     const double period = 1.0, height = 0.1, depth = 50.0;
-    const StokesWave w = stokesWave(height, period, depth, g, 3);
+    const StokesWave w = stokesWave(height, period, depth, g, 3, OceanWavesDef::MeanCurrent::None);
     const double e = 0.5 * w.k * height;
     const double c0 = std::sqrt(g / w.k), c = w.omega / w.k;
     EXPECT_NEAR(c / c0, 1.0 + 0.5 * e * e, 1e-12);
@@ -92,9 +94,10 @@ TEST(StokesWave, TheFifthOrderSurfaceSatisfiesTheExactConditionsToTheSixthPower)
     // measured 66.9 (kinematic) and 67.7 (dynamic) from 0.16 to 0.08 m, 64.2 and 64.4 from
     // 0.04 to 0.02 m);
     // Airy's (order 1) leave residuals of order ε², 24 and 26 times larger at H 0.16 m.
+    for (const auto current : {OceanWavesDef::MeanCurrent::Return, OceanWavesDef::MeanCurrent::None}) {
     double previousDynamic = 0.0, previousKinematic = 0.0;
     for (const double height : {0.16, 0.08}) {
-        const Sea fifth = Sea::fromDef(stokesOcean(height, 2.0, 0.7, 5));
+        const Sea fifth = Sea::fromDef(stokesOcean(height, 2.0, 0.7, 5, 0.0, current));
         const Sea airy = Sea::fromDef(stokesOcean(height, 2.0, 0.7, 1));
         ASSERT_EQ(fifth.kinematics(), Stretching::Truncated);
         ASSERT_EQ(fifth.components().size(), 5u);
@@ -111,6 +114,36 @@ TEST(StokesWave, TheFifthOrderSurfaceSatisfiesTheExactConditionsToTheSixthPower)
         previousDynamic = r5.dynamic;
         previousKinematic = r5.kinematic;
     }
+    }
+}
+
+TEST(StokesWave, WithTheReturnCurrentNoWaterIsCarried) {
+    // The volume flux through a fixed section, averaged over a period: 0 with the return
+    // current (Fenton's c_S = 0), the waves' Stokes transport without it (second order:
+    // g H²/(8 c) per unit width; Dean & Dalrymple 1991, eq. 7.105), which the return current
+    // carries back as c_E d.
+    const auto flux = [](const Sea& sea) {
+        const double omega = sea.components().front().omega, d = sea.depth();
+        double sum = 0.0;
+        constexpr int kTimes = 64, kLevels = 400;
+        for (int n = 0; n < kTimes; ++n) {
+            const double t = (n + 0.5) * 2.0 * kPi / omega / kTimes, eta = sea.elevation(0.0, 0.0, t);
+            const double dy = (d + eta) / kLevels;
+            for (int l = 0; l < kLevels; ++l) sum += sea.sample({0.0, -d + (l + 0.5) * dy, 0.0}, t).velocity.x * dy;
+        }
+        return sum / kTimes;
+    };
+    const Sea carried = Sea::fromDef(stokesOcean(0.16, 2.0, 0.7, 5, 0.0, OceanWavesDef::MeanCurrent::None));
+    const Sea returned = Sea::fromDef(stokesOcean(0.16, 2.0, 0.7, 5, 0.0, OceanWavesDef::MeanCurrent::Return));
+    const double c = carried.components().front().omega / carried.components().front().kx;
+    const double transport = g * 0.16 * 0.16 / (8.0 * c);
+    std::printf("flux without the current %.5f m2/s (g H^2/8c %.5f), with it %.2e; current %.4f m/s\n", flux(carried),
+                transport, flux(returned), returned.current().x);
+    EXPECT_NEAR(flux(carried), transport, 0.1 * transport);  // higher orders add ~ε²
+    EXPECT_NEAR(flux(returned), 0.0, 0.01 * transport);
+    EXPECT_LT(returned.current().x, 0.0);
+    EXPECT_NEAR(returned.current().x * 0.7, -transport, 0.1 * transport);
+    EXPECT_EQ(carried.current().x, 0.0);
 }
 
 TEST(StokesWave, HeightIsCrestToTroughAndTheCrestStandsHigh) {
@@ -229,10 +262,12 @@ TEST(StokesWave, WavesBeyondTheTheoryAreRefusedNamingTheOrder) {
     spectrum.waves.tp = 2.0;
     EXPECT_NE(refusal(spectrum).find("ocean.waves.order"), std::string::npos);
     EXPECT_EQ(refusal(stokesOcean(0.16, 2.0, 0.7, 5)), "accepted");
-    // The zone width's default is the Stokes wave's own length (k 1.9 % under Airy's here).
+    // The zone width's default is the Stokes wave's own length (k 1.9 % under Airy's here, 0.9 %
+    // with the return current).
     const double airy = 2.0 * kPi / waveNumber(kPi, 0.7);
     EXPECT_NEAR(oceanPeakWavelength(stokesOcean(0.16, 2.0, 0.7, 5)), 2.0 * kPi / stokesWave(0.16, 2.0, 0.7, g, 5).k, 1e-12);
     EXPECT_GT(oceanPeakWavelength(stokesOcean(0.16, 2.0, 0.7, 5)), 1.015 * airy);
+    EXPECT_GT(oceanPeakWavelength(stokesOcean(0.16, 2.0, 0.7, 5, 0.0, OceanWavesDef::MeanCurrent::Return)), 1.005 * airy);
 }
 
 }  // namespace

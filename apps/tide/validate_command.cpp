@@ -71,6 +71,16 @@ std::string describeMotion(const MotionDef& m) {
     return out;
 }
 
+/// "Stokes order n (Fenton 1985), ..." and its mean current.
+std::string stokesText(const OceanDef& o, double g) {
+    char current[96];
+    if (o.waves.meanCurrent == OceanWavesDef::MeanCurrent::Return)
+        std::snprintf(current, sizeof current, "no mass flux: a return current of %.3g m/s", oceanMeanCurrent(o, g));
+    else
+        std::snprintf(current, sizeof current, "no mean current");
+    return "Stokes order " + std::to_string(oceanWaveOrder(o, g)) + " (Fenton 1985), " + current;
+}
+
 /// The ocean's sea state, its peak wavelength, particles per wave height and zones, with a
 /// warning where the spacing is too coarse to hold the waves.
 void reportOcean(const OceanDef& o, const WorldDef& w) {
@@ -84,7 +94,7 @@ void reportOcean(const OceanDef& o, const WorldDef& w) {
                     waves.period, waves.direction,
                     oceanWaveOrder(o, g) == 1
                         ? (waves.order == 0 ? "linear (Airy: too shallow or steep for Stokes' series)" : "linear (Airy)")
-                        : ("Stokes order " + std::to_string(oceanWaveOrder(o, g)) + " (Fenton 1985)").c_str());
+                        : stokesText(o, g).c_str());
     } else {
         const bool jonswap = waves.type == OceanWavesDef::Type::Jonswap;
         std::printf("ocean      depth %g m: %s, Hs %g m, Tp %g s", o.depth, jonswap ? "JONSWAP" : "Pierson-Moskowitz",

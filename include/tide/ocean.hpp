@@ -27,6 +27,12 @@ struct OceanWavesDef {
     /// amplitude dispersion, no mean current); 0 picks 5 where its series converges, else 1
     /// (oceanWaveOrder). Spectra: 0 or 1 (a linear sea).
     int order = 0;
+    /// Regular waves of order 3 and up: the mean current under them (Fenton 1985's two
+    /// definitions). None: no mean Eulerian current, the water drifts with the waves (the open
+    /// sea). Return: no mass flux, a uniform current against the waves carries their Stokes
+    /// drift back (a closed flume's waves).
+    enum class MeanCurrent { None, Return };
+    MeanCurrent meanCurrent = MeanCurrent::None;
     double hs = 0.0;      ///< spectra: significant wave height Hm0 = 4 √m0, m
     double tp = 0.0;      ///< spectra: peak period, s
     /// Mean direction the waves travel towards, degrees from +x towards +z, in [−360, 360].
@@ -67,6 +73,11 @@ void validateOcean(const OceanDef& def);
 /// The order of the sea's waves: `waves.order`, or for 0 (regular waves) 5 where Stokes'
 /// fifth-order series converges for the wave (ocean::stokesWave accepts it), else 1; spectra 1.
 int oceanWaveOrder(const OceanDef& def, double g = 9.81);
+
+/// The uniform current under a Stokes wave, along its direction (negative: against it), m/s:
+/// with MeanCurrent::Return the current that carries its Stokes drift back; otherwise, and
+/// for linear seas, 0.
+double oceanMeanCurrent(const OceanDef& def, double g = 9.81);
 
 /// The JONSWAP γ a sea uses: `waves.gamma`, or DNV-RP-C205's from Tp/√Hs when it is unset
 /// (1 for Pierson–Moskowitz and regular waves).

@@ -166,7 +166,7 @@ void readOcean(Reader& r, const json& j, Scene& scene, float scale, bool domainO
     }
     const json& w = j.at("waves");
     if (!r.object(w, wp, {"type", "height", "period", "hs", "tp", "direction", "spreading", "gamma", "seed",
-                          "components", "directions", "order"}))
+                          "components", "directions", "order", "mean_current"}))
         return;
     OceanWavesDef& waves = def.waves;
     const std::vector<std::string> types{"regular", "jonswap", "pierson_moskowitz"};
@@ -183,10 +183,11 @@ void readOcean(Reader& r, const json& j, Scene& scene, float scale, bool domainO
     const bool regular = waves.type == OceanWavesDef::Type::Regular;
     // Keys of the other kind of sea are mistakes, not ignored.
     static const std::vector<const char*> spectrumKeys{"hs", "tp", "gamma", "spreading", "components", "directions"};
-    if (!regular && w.contains("order")) {
-        r.fail(join(wp, "order"), "applies to regular waves (a spectrum is a linear sea)");
-        ok = false;
-    }
+    for (const char* key : {"order", "mean_current"})
+        if (!regular && w.contains(key)) {
+            r.fail(join(wp, key), "applies to regular waves (a spectrum is a linear sea)");
+            ok = false;
+        }
     static const std::vector<const char*> regularKeys{"height", "period"};
     for (const char* key : regular ? spectrumKeys : regularKeys)
         if (w.contains(key)) {
@@ -201,6 +202,14 @@ void readOcean(Reader& r, const json& j, Scene& scene, float scale, bool domainO
         if (w.contains("order")) {
             if (auto v = wholeNumber(r, w, "order", wp, 1.0, 5.0)) waves.order = static_cast<int>(*v);
             else ok = false;
+        }
+        if (const auto current = r.string(w, "mean_current", wp, false)) {
+            if (*current == "return") waves.meanCurrent = OceanWavesDef::MeanCurrent::Return;
+            else if (*current == "none") waves.meanCurrent = OceanWavesDef::MeanCurrent::None;
+            else {
+                r.fail(join(wp, "mean_current"), "must be \"return\" or \"none\", got \"" + *current + "\"");
+                ok = false;
+            }
         }
     } else {
         if (auto v = r.number(w, "hs", wp, true, 0.0, 1e300, true)) waves.hs = *v * scale;

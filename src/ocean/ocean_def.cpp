@@ -44,7 +44,7 @@ void validateWaves(const OceanWavesDef& w, double depth) {
         if (w.gamma) refuse(path + "gamma", "applies to a jonswap spectrum, not to regular waves", *w.gamma);
         requireInRange(path + "order", w.order, 0, 5);
         // The wave must be one Stokes' theory holds (refuses naming the order).
-        if (w.order > 1) (void)ocean::stokesWave(w.height, w.period, depth, ocean::kGravity, w.order, "ocean.waves.order");
+        if (w.order > 1) (void)ocean::stokesWave(w.height, w.period, depth, ocean::kGravity, w.order, w.meanCurrent, "ocean.waves.order");
         return;
     }
     if (w.order > 1 || w.order < 0) refuse(path + "order", "applies to regular waves (a spectrum is linear: 1)", w.order);
@@ -84,11 +84,18 @@ int oceanWaveOrder(const OceanDef& def, double g) {
     if (w.type != OceanWavesDef::Type::Regular) return 1;
     if (w.order > 0) return w.order;
     try {
-        (void)ocean::stokesWave(w.height, w.period, def.depth, g, 5);
+        (void)ocean::stokesWave(w.height, w.period, def.depth, g, 5, w.meanCurrent);
         return 5;
     } catch (const std::invalid_argument&) {
         return 1;  // too shallow (or too steep) for Stokes' series: Airy's wave
     }
+}
+
+double oceanMeanCurrent(const OceanDef& def, double g) {
+    const int order = oceanWaveOrder(def, g);
+    if (order == 1) return 0.0;
+    const OceanWavesDef& w = def.waves;
+    return ocean::stokesWave(w.height, w.period, def.depth, g, order, w.meanCurrent, "ocean.waves.order").current;
 }
 
 double oceanGamma(const OceanWavesDef& waves) {
@@ -101,7 +108,7 @@ double oceanPeakWavelength(const OceanDef& def, double g) {
     const double period = def.waves.type == OceanWavesDef::Type::Regular ? def.waves.period : def.waves.tp;
     const double twoPi = 2.0 * std::numbers::pi;
     const int order = oceanWaveOrder(def, g);
-    if (order > 1) return twoPi / ocean::stokesWave(def.waves.height, period, def.depth, g, order, "ocean.waves.order").k;
+    if (order > 1) return twoPi / ocean::stokesWave(def.waves.height, period, def.depth, g, order, def.waves.meanCurrent, "ocean.waves.order").k;
     return twoPi / ocean::waveNumber(twoPi / period, def.depth, g);
 }
 

@@ -50,7 +50,7 @@ std::vector<WaveComponent> discretise(const OceanDef& def, double g, SpectrumRan
             const double k = waveNumber(omega, def.depth, g);
             return {WaveComponent{0.5 * w.height, omega, k * std::cos(mean), k * std::sin(mean), 0.0}};
         }
-        const StokesWave stokes = stokesWave(w.height, w.period, def.depth, g, order, "ocean.waves.order");
+        const StokesWave stokes = stokesWave(w.height, w.period, def.depth, g, order, w.meanCurrent, "ocean.waves.order");
         std::vector<WaveComponent> harmonics;
         for (int j = 1; j <= order; ++j) {
             const double k = j * stokes.k;
@@ -87,6 +87,11 @@ std::vector<WaveComponent> discretise(const OceanDef& def, double g, SpectrumRan
     return components;
 }
 
+glm::dvec2 meanCurrent(const OceanDef& def, double g) {
+    const double beta = def.waves.direction * kPi / 180.0;
+    return oceanMeanCurrent(def, g) * glm::dvec2(std::cos(beta), std::sin(beta));
+}
+
 double repeatPeriod(const OceanDef& def, SpectrumRange range) {
     validateOcean(def);
     if (def.waves.type == OceanWavesDef::Type::Regular) return def.waves.period;
@@ -94,12 +99,13 @@ double repeatPeriod(const OceanDef& def, SpectrumRange range) {
     return 4.0 * kPi / combOf(def.waves, range).step;
 }
 
-Sea::Sea(std::vector<WaveComponent> components, double depth, double g, double density)
-    : components_(std::move(components)), depth_(depth), g_(g), density_(density) {
+Sea::Sea(std::vector<WaveComponent> components, double depth, double g, double density, glm::dvec2 current)
+    : components_(std::move(components)), depth_(depth), g_(g), density_(density), current_(current) {
     if (!(depth > 0.0 && std::isfinite(depth)) || !(g > 0.0 && std::isfinite(g)) ||
-        !(density > 0.0 && std::isfinite(density))) {
+        !(density > 0.0 && std::isfinite(density)) || !std::isfinite(current.x + current.y)) {
         std::ostringstream message;
-        message << "ocean::Sea: depth, g and density must be > 0, got " << depth << ", " << g << ", " << density;
+        message << "ocean::Sea: depth, g and density must be > 0 and the current finite, got " << depth << ", " << g
+                << ", " << density << ", (" << current.x << ", " << current.y << ")";
         throw std::invalid_argument(message.str());
     }
     profiles_.reserve(components_.size());
@@ -126,7 +132,7 @@ Sea::Sea(std::vector<WaveComponent> components, double depth, double g, double d
 }
 
 Sea Sea::fromDef(const OceanDef& def, double g, double density) {
-    return Sea(discretise(def, g), def.depth, g, density);
+    return Sea(discretise(def, g), def.depth, g, density, meanCurrent(def, g));
 }
 
 double Sea::phaseAt(const WaveComponent& c, double x, double z, double t) const {
@@ -191,6 +197,8 @@ WaterSample Sea::sample(const glm::dvec3& point, double t, std::optional<Stretch
         out.velocity.y += p.velocity * (up - down) * p.overSinh * trig[2 * i + 1];
         dynamic += p.velocity * c.omega / (g_ * p.k) * (up + down) * p.overSinh * trig[2 * i];
     }
+    out.velocity.x += current_.x;
+    out.velocity.z += current_.y;
     // Wheeler and Truncated: the air above the surface is at atmospheric pressure. The linear
     // field keeps its formula everywhere (its surface condition holds at y = 0, not at η).
     out.pressure = out.wet || stretching == Stretching::None ? density_ * g_ * (dynamic - point.y) : 0.0;

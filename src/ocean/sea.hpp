@@ -89,6 +89,10 @@ struct SpectrumRange {
 /// std::mt19937_64(seed) through uniform01 (per band: the shuffle's draws, then its phases).
 std::vector<WaveComponent> discretise(const OceanDef& def, double g = kGravity, SpectrumRange range = {});
 
+/// The uniform current under the sea, (x, z) m/s: a Stokes wave's c_E along its direction
+/// (the return current with OceanWavesDef::MeanCurrent::Return), else 0.
+glm::dvec2 meanCurrent(const OceanDef& def, double g = kGravity);
+
 /// The time after which discretise(def)'s sea repeats exactly: T (regular) or 4π/δω, s.
 double repeatPeriod(const OceanDef& def, SpectrumRange range = {});
 
@@ -99,8 +103,9 @@ class Sea {
 public:
     /// Throws std::invalid_argument for a depth, g or density ≤ 0, a free component whose ω is
     /// not that of its wave vector (relative 1e-9), or one whose amplitude is negative.
-    Sea(std::vector<WaveComponent> components, double depth, double g = kGravity, double density = 1000.0);
-    /// The sea of an ocean definition: discretise(def, g) on def.depth.
+    Sea(std::vector<WaveComponent> components, double depth, double g = kGravity, double density = 1000.0,
+        glm::dvec2 current = glm::dvec2(0.0));
+    /// The sea of an ocean definition: discretise(def, g) on def.depth, with meanCurrent(def, g).
     static Sea fromDef(const OceanDef& def, double g = kGravity, double density = 1000.0);
 
     /// η at (x, z), time t, m.
@@ -122,6 +127,9 @@ public:
     /// How the sea's velocity is evaluated away from still water: Wheeler for linear waves,
     /// Truncated for a Stokes wave (any bound component).
     [[nodiscard]] Stretching kinematics() const { return kinematics_; }
+    /// The uniform horizontal current (x, z) added to every velocity, m/s (not to the choppy
+    /// displacement: it would carry the surface away).
+    [[nodiscard]] glm::dvec2 current() const { return current_; }
     /// V of component i (a ω for a free wave), m/s.
     [[nodiscard]] double velocityAmplitude(std::size_t i) const { return profiles_[i].velocity; }
 
@@ -148,6 +156,7 @@ private:
     std::vector<Profile> profiles_;
     double depth_, g_, density_;
     Stretching kinematics_ = Stretching::Wheeler;
+    glm::dvec2 current_{0.0};
 };
 
 }  // namespace tide::ocean

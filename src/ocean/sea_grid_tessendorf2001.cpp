@@ -56,7 +56,7 @@ Sea snapToGrid(const Sea& sea, const GridSpec& grid) {
         if (!c.bound) c.omega = angularFrequency(std::hypot(c.kx, c.kz), sea.depth(), sea.gravity());
         snapped.push_back(c);
     }
-    return Sea(std::move(snapped), sea.depth(), sea.gravity(), sea.density());
+    return Sea(std::move(snapped), sea.depth(), sea.gravity(), sea.density(), sea.current());
 }
 
 Sea gridSea(const OceanDef& def, const GridSpec& grid, double g) {
@@ -94,7 +94,7 @@ struct SeaGrid::Transforms {
     Transforms(int nx, int nz) : x(static_cast<std::size_t>(nx), true), z(static_cast<std::size_t>(nz), true) {}
 };
 
-SeaGrid::SeaGrid(const Sea& sea, GridSpec grid) : grid_(grid) {
+SeaGrid::SeaGrid(const Sea& sea, GridSpec grid) : grid_(grid), current_(sea.current()) {
     checkGrid(grid_);
     const int nx = grid_.pointsX, nz = grid_.pointsZ;
     const double d = sea.depth();
@@ -184,6 +184,7 @@ void SeaGrid::update(double t) {
             (*outputs[p][1])[n] = work_[n].imag();
         }
     }
+    for (std::size_t n = 0; n < velocityX_.size(); ++n) velocityX_[n] += current_.x, velocityZ_[n] += current_.y;
 }
 
 }  // namespace tide::ocean

@@ -63,7 +63,8 @@ public:
     /// Choppy horizontal displacement of the surface (Sea::horizontalDisplacement), m.
     [[nodiscard]] const std::vector<double>& displacementX() const { return displacementX_; }
     [[nodiscard]] const std::vector<double>& displacementZ() const { return displacementZ_; }
-    /// Linear velocity at still water (y = 0): horizontal (u, w) and vertical v, m/s.
+    /// Linear velocity at still water (y = 0), with the sea's current: horizontal (u, w) and
+    /// vertical v, m/s.
     [[nodiscard]] const std::vector<double>& velocityX() const { return velocityX_; }
     [[nodiscard]] const std::vector<double>& velocityY() const { return velocityY_; }
     [[nodiscard]] const std::vector<double>& velocityZ() const { return velocityZ_; }
@@ -84,6 +85,7 @@ private:
     std::unique_ptr<Transforms> transforms_;
     std::vector<std::complex<double>> work_, line_, lineOut_;
     std::vector<double> elevation_, displacementX_, displacementZ_, velocityX_, velocityY_, velocityZ_;
+    glm::dvec2 current_{0.0};  // the sea's uniform current, added to the velocities
 };
 
 }  // namespace tide::ocean

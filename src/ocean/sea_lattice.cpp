@@ -30,7 +30,7 @@ void accumulate(float* __restrict sum, const float* __restrict profile, float fa
 }  // namespace
 
 SeaLattice::SeaLattice(const Sea& sea, LatticeSpec spec)
-    : spec_(std::move(spec)), depth_(sea.depth()), kinematics_(sea.kinematics()),
+    : spec_(std::move(spec)), depth_(sea.depth()), kinematics_(sea.kinematics()), current_(sea.current()),
       time_(std::numeric_limits<double>::quiet_NaN()) {
     const auto columns = static_cast<std::size_t>(std::max(spec_.columnsX, 0)) * static_cast<std::size_t>(std::max(spec_.columnsZ, 0));
     if (!(spec_.step > 0.0 && std::isfinite(spec_.step)) || spec_.columnsX < 4 || spec_.columnsZ < 4 ||
@@ -109,6 +109,7 @@ void SeaLattice::update(double t, int threads, bool rates) {
         elevationRate_.assign(elevation_.size(), 0.0f);
         velocityRate_.assign(velocity_.size(), 0.0f);
     }
+    const auto currentX = static_cast<float>(current_.x), currentZ = static_cast<float>(current_.y);
     parallelFor(static_cast<std::uint32_t>(active_.size()), threads, [&](std::uint32_t a) {
         const std::size_t column = active_[a];
         const std::size_t i = column % static_cast<std::size_t>(spec_.columnsX), j = column / static_cast<std::size_t>(spec_.columnsX);
@@ -143,9 +144,9 @@ void SeaLattice::update(double t, int threads, bool rates) {
         elevation_[a] = static_cast<float>(eta);
         float* out = &velocity_[a * levels * 3];
         for (std::size_t l = 0; l < levels; ++l) {
-            out[3 * l] = ux[l];
+            out[3 * l] = ux[l] + currentX;
             out[3 * l + 1] = uy[l];
-            out[3 * l + 2] = uz[l];
+            out[3 * l + 2] = uz[l] + currentZ;
         }
         if (!rates) return;
         elevationRate_[a] = static_cast<float>(etaRate);

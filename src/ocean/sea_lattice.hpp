@@ -80,6 +80,7 @@ private:
     Stretching kinematics_;  // the sea's: Wheeler, or Truncated for a Stokes wave
     double top_ = 0.0;       // the highest level's y above still water (Truncated), m
     double levelStep_ = 0.0; // between levels, m
+    glm::dvec2 current_;     // the sea's uniform current (x, z), m/s
     int levelCount_;  // L + 3
     std::size_t components_;
     // Per component: amplitude, ω, phase; tables e^{i kx x_i} (columnsX × N), e^{i kz z_j}.

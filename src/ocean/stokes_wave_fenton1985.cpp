@@ -18,7 +18,7 @@ namespace {
 struct Coefficients {
     double a11, a22, a31, a33, a42, a44, a51, a53, a55;
     double b22, b31, b42, b44, b53, b55;
-    double c0, c2, c4;
+    double c0, c2, c4, d2, d4;
 };
 
 Coefficients coefficients(double kd) {
@@ -50,16 +50,26 @@ Coefficients coefficients(double kd) {
     c.c0 = std::sqrt(th);
     c.c2 = c.c0 * (2.0 + 7.0 * s2) / (4.0 * m2);
     c.c4 = c.c0 * (4.0 + 32.0 * s - 116.0 * s2 - 400.0 * s3 - 71.0 * s4 + 146.0 * s5) / (32.0 * m5);
+    c.d2 = -0.5 * std::sqrt(coth);
+    c.d4 = std::sqrt(coth) * (2.0 + 4.0 * s + s2 + 2.0 * s3) / (8.0 * m3);
     return c;
 }
 
-// Eq. 15 with c_E = 0, truncated at ε^order: c √(k/g) − (C0 + ε² C2 + ε⁴ C4).
-double celerityMismatch(double k, double height, double omega, double depth, double g, int order) {
+// ū √(k/g) (eq. 15) and, with the mass flux, Q/d √(k/g) (eq. 16), truncated at ε^order.
+double meanSpeed(const Coefficients& c, double e, int order) {
+    const double e2 = e * e;
+    return c.c0 + (order >= 3 ? e2 * c.c2 : 0.0) + (order >= 5 ? e2 * e2 * c.c4 : 0.0);
+}
+double fluxSpeed(const Coefficients& c, double e, double kd, int order) {
+    const double e2 = e * e;
+    return meanSpeed(c, e, order) + (order >= 3 ? e2 * c.d2 / kd : 0.0) + (order >= 5 ? e2 * e2 * c.d4 / kd : 0.0);
+}
+
+// c √(k/g) less the theory's for the chosen current.
+double celerityMismatch(double k, double height, double omega, double depth, double g, int order, bool noMassFlux) {
     const Coefficients c = coefficients(k * depth);
-    const double e2 = 0.25 * k * k * height * height;
-    double series = c.c0;
-    if (order >= 3) series += e2 * c.c2;
-    if (order >= 5) series += e2 * e2 * c.c4;
+    const double e = 0.5 * k * height;
+    const double series = noMassFlux ? fluxSpeed(c, e, k * depth, order) : meanSpeed(c, e, order);
     return omega / std::sqrt(g * k) - series;
 }
 
@@ -71,7 +81,9 @@ double celerityMismatch(double k, double height, double omega, double depth, dou
 
 }  // namespace
 
-StokesWave stokesWave(double height, double period, double depth, double g, int order, const char* field) {
+StokesWave stokesWave(double height, double period, double depth, double g, int order, OceanWavesDef::MeanCurrent current,
+                      const char* field) {
+    const bool noMassFlux = current == OceanWavesDef::MeanCurrent::Return;
     if (!(order >= 1 && order <= 5)) refuse(field, order, "must be 1 to 5");
     if (!(height > 0.0 && period > 0.0 && depth > 0.0 && g > 0.0) || !std::isfinite(height + period + depth + g))
         refuse(field, order, "needs a height, period, depth and g > 0");
@@ -82,12 +94,12 @@ StokesWave stokesWave(double height, double period, double depth, double g, int 
     // bisect between half and twice Airy's k, where it changes sign for any wave the theory holds.
     const double linear = waveNumber(w.omega, depth, g);
     double lo = 0.5 * linear, hi = 2.0 * linear;
-    const double fLo = celerityMismatch(lo, height, w.omega, depth, g, order);
-    const double fHi = celerityMismatch(hi, height, w.omega, depth, g, order);
+    const double fLo = celerityMismatch(lo, height, w.omega, depth, g, order, noMassFlux);
+    const double fHi = celerityMismatch(hi, height, w.omega, depth, g, order, noMassFlux);
     if (!(fLo > 0.0 && fHi < 0.0)) refuse(field, order, "has no wave number for this height, period and depth");
     for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
         const double mid = 0.5 * (lo + hi);
-        (celerityMismatch(mid, height, w.omega, depth, g, order) > 0.0 ? lo : hi) = mid;
+        (celerityMismatch(mid, height, w.omega, depth, g, order, noMassFlux) > 0.0 ? lo : hi) = mid;
     }
     w.k = 0.5 * (lo + hi);
     const double kd = w.k * depth, e = 0.5 * w.k * height;
@@ -98,6 +110,8 @@ StokesWave stokesWave(double height, double period, double depth, double g, int 
         refuse(field, order, why.str());
     }
     const Coefficients c = coefficients(kd);
+    // c_E = c − ū: 0 by definition without a current; with no mass flux, the return current.
+    w.current = noMassFlux ? w.omega / w.k - std::sqrt(g / w.k) * meanSpeed(c, e, order) : 0.0;
     // ε^i, zero above the order.
     double pow[6] = {1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
     for (int i = 1; i <= 5; ++i) pow[i] = i <= order ? pow[i - 1] * e : 0.0;
