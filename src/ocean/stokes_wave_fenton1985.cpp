@@ -113,14 +113,14 @@ StokesWave stokesWave(double height, double period, double depth, double g, int 
     // c_E = c − ū: 0 by definition without a current; with no mass flux, the return current.
     w.current = noMassFlux ? w.omega / w.k - std::sqrt(g / w.k) * meanSpeed(c, e, order) : 0.0;
     // ε^i, zero above the order.
-    double pow[6] = {1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-    for (int i = 1; i <= 5; ++i) pow[i] = i <= order ? pow[i - 1] * e : 0.0;
+    double powers[6] = {1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+    for (int i = 1; i <= 5; ++i) powers[i] = i <= order ? powers[i - 1] * e : 0.0;
     const double k = w.k;
-    w.elevation = {(pow[1] + pow[3] * c.b31 - pow[5] * (c.b53 + c.b55)) / k, (pow[2] * c.b22 + pow[4] * c.b42) / k,
-                   (-pow[3] * c.b31 + pow[5] * c.b53) / k, pow[4] * c.b44 / k, pow[5] * c.b55 / k};
+    w.elevation = {(powers[1] + powers[3] * c.b31 - powers[5] * (c.b53 + c.b55)) / k, (powers[2] * c.b22 + powers[4] * c.b42) / k,
+                   (-powers[3] * c.b31 + powers[5] * c.b53) / k, powers[4] * c.b44 / k, powers[5] * c.b55 / k};
     // u = ∂φ/∂x = C0 √(g/k) Σ_i ε^i Σ_j j A_ij cosh(jk(y+d)) cos jθ, so V_j = C0 √(g/k) j sinh(jkd) Σ_i ε^i A_ij.
-    const double sums[5] = {pow[1] * c.a11 + pow[3] * c.a31 + pow[5] * c.a51, pow[2] * c.a22 + pow[4] * c.a42,
-                            pow[3] * c.a33 + pow[5] * c.a53, pow[4] * c.a44, pow[5] * c.a55};
+    const double sums[5] = {powers[1] * c.a11 + powers[3] * c.a31 + powers[5] * c.a51, powers[2] * c.a22 + powers[4] * c.a42,
+                            powers[3] * c.a33 + powers[5] * c.a53, powers[4] * c.a44, powers[5] * c.a55};
     const double scale = c.c0 * std::sqrt(g / k), cappedKd = std::min(kd, 15.0);
     for (int j = 0; j < 5; ++j) w.velocity[j] = scale * (j + 1) * std::sinh((j + 1) * cappedKd) * sums[j];
     for (int j = 1; j < order; ++j)
