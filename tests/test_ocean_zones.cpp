@@ -309,13 +309,13 @@ TEST(OceanZones, BadOceansAreRefusedNamingTheField) {
 /// absorbs them. A benchmark, not in the suite (2D at 1.6 cm, 10 particles per wave height,
 /// 5 min on one thread): with Stokes' far field the reflection coefficient and the RMS are met
 /// (0.018, 3.7 % of H), the mean height not quite (−4.7 %; docs/ocean.md § Figures). Run it with
-///   TIDE_ZONE_ORDER=5 TIDE_ZONE_DIMENSIONS=2 TIDE_ZONE_SPACING=0.016 build/bin/test_ocean_zones --gtest_also_run_disabled_tests --gtest_filter='*Regular*'
-/// (TIDE_ZONE_ORDER: the far field's Stokes order, 1 (Airy) when unset).
+///   TIDE_ZONE_DIMENSIONS=2 TIDE_ZONE_SPACING=0.016 build/bin/test_ocean_zones --gtest_also_run_disabled_tests --gtest_filter='*Regular*'
+/// (TIDE_ZONE_ORDER=1 for Airy's far field; unset, the scene default: Stokes' fifth order here).
 TEST(OceanZones, DISABLED_RegularWaveFromTheZoneAloneAndAbsorbedAtTheFarEnd) {
     const double H = envOr("TIDE_ZONE_HEIGHT", 0.16), T = envOr("TIDE_ZONE_PERIOD", 2.0), d = 0.7, g = 9.81;
     const double omega = 2.0 * std::numbers::pi / T;
     OceanDef o = regularOcean(H, T, d, {OceanSide::MinusX, OceanSide::PlusX}, 0.0);
-    o.waves.order = static_cast<int>(envOr("TIDE_ZONE_ORDER", 1));  // Stokes' order of the far field
+    o.waves.order = static_cast<int>(envOr("TIDE_ZONE_ORDER", 0));  // the far field's Stokes order (0: the default)
     const double L = oceanPeakWavelength(o, g), k = 2.0 * std::numbers::pi / L;
     const float spacing = static_cast<float>(envOr("TIDE_ZONE_SPACING", 0.05));
     const double zone = envOr("TIDE_ZONE_WIDTH", 1.0) * L;    // both zones
