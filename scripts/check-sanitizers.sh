@@ -26,7 +26,7 @@ section() { printf '\n== %s (%s)\n' "$1" "$(date +%T)"; }
 # --- ASan + UBSan: unit tests (the minute-long physics runs excluded by name) ---
 asan_tests=(test_kernels test_pair_sums test_neighbors test_world test_emitter test_fluid_api test_checkpoint test_exporters
             test_surface_mesh test_far_field_mesh test_wave_theory test_viscosity test_periodic test_ocean_spectrum test_ocean_kinematics
-            test_ocean_defs test_exact_sum test_partition test_domain_split)
+            test_ocean_defs test_stokes_wave test_exact_sum test_partition test_domain_split)
 asan_skip="Emitter.FluidJetHasNoGapsOrDoubleLayers:FluidApi.SeedFreeFallBlockRunsVerbatim"
 asan_skip+=":PeriodicWorld.FlowCrossesTheSeamsAndConservesParticles:Checkpoint.PcisphAndWcsphResumeBitIdentically"
 asan_skip+=":DivergenceGuard.ASaneDamBreakNeverTrips"
