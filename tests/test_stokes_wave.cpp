@@ -95,32 +95,32 @@ TEST(StokesWave, TheFifthOrderSurfaceSatisfiesTheExactConditionsToTheSixthPower)
     // 0.04 to 0.02 m);
     // Airy's (order 1) leave residuals of order ε², 24 and 26 times larger at H 0.16 m.
     for (const auto current : {OceanWavesDef::MeanCurrent::Return, OceanWavesDef::MeanCurrent::None}) {
-    double previousDynamic = 0.0, previousKinematic = 0.0;
-    for (const double height : {0.16, 0.08}) {
-        const Sea fifth = Sea::fromDef(stokesOcean(height, 2.0, 0.7, 5, 0.0, current));
-        const Sea airy = Sea::fromDef(stokesOcean(height, 2.0, 0.7, 1));
-        ASSERT_EQ(fifth.kinematics(), Stretching::Truncated);
-        ASSERT_EQ(fifth.components().size(), 5u);
-        const SurfaceResidual r5 = surfaceResidual(fifth);
-        const SurfaceResidual r1 = surfaceResidual(airy);  // Wheeler-stretched
-        std::printf("H %.2f m: fifth order dynamic %.3e kinematic %.3e; Airy dynamic %.3e kinematic %.3e\n", height,
-                    r5.dynamic, r5.kinematic, r1.dynamic, r1.kinematic);
-        EXPECT_LT(r5.dynamic, 0.1 * r1.dynamic);
-        EXPECT_LT(r5.kinematic, 0.1 * r1.kinematic);
-        if (previousDynamic > 0.0) {
-            EXPECT_GT(previousDynamic / r5.dynamic, 40.0);
-            EXPECT_GT(previousKinematic / r5.kinematic, 40.0);
+        double previousDynamic = 0.0, previousKinematic = 0.0;
+        for (const double height : {0.16, 0.08}) {
+            const Sea fifth = Sea::fromDef(stokesOcean(height, 2.0, 0.7, 5, 0.0, current));
+            const Sea airy = Sea::fromDef(stokesOcean(height, 2.0, 0.7, 1));
+            ASSERT_EQ(fifth.kinematics(), Stretching::Truncated);
+            ASSERT_EQ(fifth.components().size(), 5u);
+            const SurfaceResidual r5 = surfaceResidual(fifth);
+            const SurfaceResidual r1 = surfaceResidual(airy);  // Wheeler-stretched
+            std::printf("H %.2f m: fifth order dynamic %.3e kinematic %.3e; Airy dynamic %.3e kinematic %.3e\n", height,
+                        r5.dynamic, r5.kinematic, r1.dynamic, r1.kinematic);
+            EXPECT_LT(r5.dynamic, 0.1 * r1.dynamic);
+            EXPECT_LT(r5.kinematic, 0.1 * r1.kinematic);
+            if (previousDynamic > 0.0) {
+                EXPECT_GT(previousDynamic / r5.dynamic, 40.0);
+                EXPECT_GT(previousKinematic / r5.kinematic, 40.0);
+            }
+            previousDynamic = r5.dynamic;
+            previousKinematic = r5.kinematic;
         }
-        previousDynamic = r5.dynamic;
-        previousKinematic = r5.kinematic;
-    }
     }
 }
 
 TEST(StokesWave, WithTheReturnCurrentNoWaterIsCarried) {
     // The volume flux through a fixed section, averaged over a period: 0 with the return
     // current (Fenton's c_S = 0), the waves' Stokes transport without it (second order:
-    // g H²/(8 c) per unit width; Dean & Dalrymple 1991, eq. 7.105), which the return current
+    // g H²/(8 c) per unit width; Dean & Dalrymple 1991, ch. 7), which the return current
     // carries back as c_E d.
     const auto flux = [](const Sea& sea) {
         const double omega = sea.components().front().omega, d = sea.depth();
