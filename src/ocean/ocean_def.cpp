@@ -78,24 +78,30 @@ void validateOcean(const OceanDef& def) {
                 refuse("ocean.open_sides[" + std::to_string(i) + "]", "is listed twice", oceanSideName(def.openSides[i]));
 }
 
-int oceanWaveOrder(const OceanDef& def, double g) {
+namespace ocean {
+
+std::optional<StokesWave> oceanStokesWave(const OceanDef& def, double g) {
     validateOcean(def);
     const OceanWavesDef& w = def.waves;
-    if (w.type != OceanWavesDef::Type::Regular) return 1;
-    if (w.order > 0) return w.order;
+    if (w.type != OceanWavesDef::Type::Regular || w.order == 1) return std::nullopt;
+    if (w.order > 1) return stokesWave(w.height, w.period, def.depth, g, w.order, w.meanCurrent, "ocean.waves.order");
     try {
-        (void)ocean::stokesWave(w.height, w.period, def.depth, g, 5, w.meanCurrent);
-        return 5;
+        return stokesWave(w.height, w.period, def.depth, g, 5, w.meanCurrent);
     } catch (const std::invalid_argument&) {
-        return 1;  // too shallow (or too steep) for Stokes' series: Airy's wave
+        return std::nullopt;  // too shallow (or too steep) for Stokes' series: Airy's wave
     }
 }
 
+}  // namespace ocean
+
+int oceanWaveOrder(const OceanDef& def, double g) {
+    const auto stokes = ocean::oceanStokesWave(def, g);
+    return stokes ? stokes->order : 1;
+}
+
 double oceanMeanCurrent(const OceanDef& def, double g) {
-    const int order = oceanWaveOrder(def, g);
-    if (order == 1) return 0.0;
-    const OceanWavesDef& w = def.waves;
-    return ocean::stokesWave(w.height, w.period, def.depth, g, order, w.meanCurrent, "ocean.waves.order").current;
+    const auto stokes = ocean::oceanStokesWave(def, g);
+    return stokes ? stokes->current : 0.0;
 }
 
 double oceanGamma(const OceanWavesDef& waves) {
@@ -107,8 +113,7 @@ double oceanPeakWavelength(const OceanDef& def, double g) {
     validateOcean(def);
     const double period = def.waves.type == OceanWavesDef::Type::Regular ? def.waves.period : def.waves.tp;
     const double twoPi = 2.0 * std::numbers::pi;
-    const int order = oceanWaveOrder(def, g);
-    if (order > 1) return twoPi / ocean::stokesWave(def.waves.height, period, def.depth, g, order, def.waves.meanCurrent, "ocean.waves.order").k;
+    if (const auto stokes = ocean::oceanStokesWave(def, g)) return twoPi / stokes->k;
     return twoPi / ocean::waveNumber(twoPi / period, def.depth, g);
 }
 

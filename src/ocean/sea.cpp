@@ -45,17 +45,16 @@ std::vector<WaveComponent> discretise(const OceanDef& def, double g, SpectrumRan
     const double mean = w.direction * kPi / 180.0;
     if (w.type == OceanWavesDef::Type::Regular) {
         const double omega = 2.0 * kPi / w.period;
-        const int order = oceanWaveOrder(def, g);
-        if (order == 1) {
+        const auto stokes = oceanStokesWave(def, g);
+        if (!stokes) {
             const double k = waveNumber(omega, def.depth, g);
             return {WaveComponent{0.5 * w.height, omega, k * std::cos(mean), k * std::sin(mean), 0.0}};
         }
-        const StokesWave stokes = stokesWave(w.height, w.period, def.depth, g, order, w.meanCurrent, "ocean.waves.order");
         std::vector<WaveComponent> harmonics;
-        for (int j = 1; j <= order; ++j) {
-            const double k = j * stokes.k;
-            harmonics.push_back(WaveComponent{stokes.elevation[j - 1], j * omega, k * std::cos(mean), k * std::sin(mean), 0.0,
-                                              true, stokes.velocity[j - 1]});
+        for (int j = 1; j <= stokes->order; ++j) {
+            const double k = j * stokes->k;
+            harmonics.push_back(WaveComponent{stokes->elevation[j - 1], j * omega, k * std::cos(mean), k * std::sin(mean), 0.0,
+                                              true, stokes->velocity[j - 1]});
         }
         return harmonics;
     }
@@ -126,9 +125,12 @@ Sea::Sea(std::vector<WaveComponent> components, double depth, double g, double d
         if (c.bound) kinematics_ = Stretching::Truncated;
         const double decay = std::exp(-2.0 * k * depth);
         const double overSinh = 1.0 / -std::expm1(-2.0 * k * depth);
-        profiles_.push_back(Profile{k, c.kx / k, c.kz / k, decay, (1.0 + decay) * overSinh, overSinh,
-                                    c.bound ? c.velocity : c.amplitude * c.omega});
+        const double velocity = c.bound ? c.velocity : c.amplitude * c.omega;
+        profiles_.push_back(Profile{k, c.kx / k, c.kz / k, decay, (1.0 + decay) * overSinh, overSinh, velocity,
+                                    velocity * c.omega / (g * k)});
     }
+    if (kinematics_ == Stretching::Truncated)
+        for (const WaveComponent& c : components_) kinematicTop_ += c.amplitude;
 }
 
 Sea Sea::fromDef(const OceanDef& def, double g, double density) {
@@ -185,7 +187,6 @@ WaterSample Sea::sample(const glm::dvec3& point, double t, std::optional<Stretch
     }
     double dynamic = 0.0;  // −∂φ/∂t / g: Σ (V ω/(g k)) cosh(k(y'+d))/sinh(kd) cos θ (a cosh/cosh for a free wave)
     for (std::size_t i = 0; i < components_.size(); ++i) {
-        const WaveComponent& c = components_[i];
         const Profile& p = profiles_[i];
         // cosh(k(y+d)) and sinh(k(y+d)) over e^{kd}: e^{ky} ± e^{−k(y+2d)}, the second as
         // e^{−2kd}/e^{ky} (0 where e^{ky} underflows: then both terms are negligible).
@@ -195,7 +196,7 @@ WaterSample Sea::sample(const glm::dvec3& point, double t, std::optional<Stretch
         out.velocity.x += horizontal * p.ux;
         out.velocity.z += horizontal * p.uz;
         out.velocity.y += p.velocity * (up - down) * p.overSinh * trig[2 * i + 1];
-        dynamic += p.velocity * c.omega / (g_ * p.k) * (up + down) * p.overSinh * trig[2 * i];
+        dynamic += p.head * (up + down) * p.overSinh * trig[2 * i];
     }
     out.velocity.x += current_.x;
     out.velocity.z += current_.y;

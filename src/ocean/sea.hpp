@@ -127,6 +127,10 @@ public:
     /// How the sea's velocity is evaluated away from still water: Wheeler for linear waves,
     /// Truncated for a Stokes wave (any bound component).
     [[nodiscard]] Stretching kinematics() const { return kinematics_; }
+    /// The highest y, above still water, at which the velocity is read: 0 with Wheeler's
+    /// stretching (the surface maps to still water), the highest crest the components can make,
+    /// Σ a, for a Stokes wave (read at the point itself).
+    [[nodiscard]] double kinematicTop() const { return kinematicTop_; }
     /// The uniform horizontal current (x, z) added to every velocity, m/s (not to the choppy
     /// displacement: it would carry the surface away).
     [[nodiscard]] glm::dvec2 current() const { return current_; }
@@ -149,6 +153,7 @@ private:
         double coth;     // coth(kd)
         double overSinh; // e^{kd}/sinh(kd) = 1/(1 − e^(−2kd))
         double velocity; // V
+        double head;     // V ω/(g k): the pressure head −(∂φ/∂t)/g of the profile cosh/sinh
     };
     [[nodiscard]] double phaseAt(const WaveComponent& c, double x, double z, double t) const;
 
@@ -156,6 +161,7 @@ private:
     std::vector<Profile> profiles_;
     double depth_, g_, density_;
     Stretching kinematics_ = Stretching::Wheeler;
+    double kinematicTop_ = 0.0;
     glm::dvec2 current_{0.0};
 };
 

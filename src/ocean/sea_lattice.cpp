@@ -47,8 +47,7 @@ SeaLattice::SeaLattice(const Sea& sea, LatticeSpec spec)
     const std::size_t n = components_;
     // Wheeler: levels over the stretched column −d … 0. Truncated (a Stokes wave): over the
     // column itself, from the floor to the highest crest the components can make.
-    if (kinematics_ == Stretching::Truncated)
-        for (const WaveComponent& w : sea.components()) top_ += w.amplitude;
+    top_ = sea.kinematicTop();
     levelStep_ = (depth_ + top_) / spec_.levels;
     const double dy = levelStep_;
     cosX_.resize(static_cast<std::size_t>(spec_.columnsX) * n);

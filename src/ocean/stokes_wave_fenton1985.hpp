@@ -24,6 +24,7 @@
 /// (ocean/sea.hpp's form for a linear wave, V = a ω; here a bound harmonic's own V).
 
 #include <array>
+#include <optional>
 
 #include <tide/ocean.hpp>
 
@@ -47,5 +48,10 @@ struct StokesWave {
 /// needs a small Ursell number; cnoidal theory holds there instead).
 StokesWave stokesWave(double height, double period, double depth, double g, int order,
                       OceanWavesDef::MeanCurrent current = OceanWavesDef::MeanCurrent::None, const char* field = "order");
+
+/// The Stokes wave of an ocean's regular sea at its order (tide::oceanWaveOrder: `order`, or
+/// 5 where the series holds for the wave when it is 0), or none for Airy's wave and spectra.
+/// The one place the automatic order is decided. Validates `def` first.
+std::optional<StokesWave> oceanStokesWave(const OceanDef& def, double g);
 
 }  // namespace tide::ocean
