@@ -3,9 +3,20 @@
 // prints the wave-height envelope (each period's highest minus lowest level, averaged) at
 // three gauges over periods 10-15 and 25-30 and their ratio, and the paddle's correction.
 //
+// The default flume is resonant: a piston that does not absorb reflects like a wall, and the
+// forced standing wave between it and the far wall grows like 1/|sin kL| (kL = nπ: without
+// bound in linear theory). 2.74 m from paddle to wall (n = 4: two Airy wave lengths, 2.746 m)
+// is the middle of the resonance a scan of lengths found at the defaults (without absorption
+// the envelope grows by 1.3-1.6 at 2.68-2.78 m; docs/notes/waves.md § The closed flume at
+// resonance); the gauges stand at a quarter, half and three quarters of it, the standing
+// wave's antinodes.
+// The solver settings default to those a 2D wave scene gets (shifting 0.2, the heavy ball 0.7,
+// no difference form; sources/wave_numerics.hpp).
+//
 //   tide_closed_flume [--spacing S] [--depth D] [--period T] [--height H] [--length L]
 //                     [--periods N] [--threads N] [--absorption on|off|both]
 //                     [--shifting A] [--difference-form C] [--momentum M] [--max-iterations N]
+//                     [--trace PREFIX]
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -21,11 +32,10 @@
 namespace {
 
 struct Options {
-    float spacing = 0.02f, depth = 0.3f, period = 1.0f, height = 0.04f, length = 3.0f;
+    float spacing = 0.02f, depth = 0.3f, period = 1.0f, height = 0.04f, length = 2.74f;
     int periods = 30, threads = 1;
-    // Shifting and the difference form off: in 2D the wave settings' shifting 0.2 keeps
-    // waves at a third of their height at 2 cm (docs/notes/waves.md § 2D waves).
-    float shifting = 0.0f, differenceForm = 0.0f, momentum = 0.0f;
+    // Negative: automatic, the settings a 2D wave scene gets.
+    float shifting = -1.0f, differenceForm = -1.0f, momentum = -1.0f;
     std::string trace;  ///< a CSV of time, paddle displacement and the level in front of it
     int maxIterations = 1000;  // the default 100 lets solves stop short and the 2D flume diverge by 14-19 s
 };
@@ -45,8 +55,8 @@ void run(const Options& o, bool absorb) {
     solver.momentum = o.momentum;
     solver.maxIterations = o.maxIterations;
     tide::World world = tide::scenarios::planarFlume(o.spacing, length, paddle, 0.0f, o.threads, solver);
-    const std::vector<float> at{paddle.x + 0.25f * (length - paddle.x), paddle.x + 0.5f * (length - paddle.x),
-                                length - 0.3f};
+    const float span = length - paddle.x;
+    const std::vector<float> at{paddle.x + 0.25f * span, paddle.x + 0.5f * span, paddle.x + 0.75f * span};
     std::vector<tide::waves::Record> records(at.size(), tide::waves::Record{0.02, 0.02, {}});
     std::printf("absorption %s: %.3f m flume closed by a wall, %u particles, gauges at %.2f %.2f %.2f m\n",
                 absorb ? "on" : "off", length, world.particles().size(), at[0], at[1], at[2]);
@@ -99,9 +109,9 @@ int main(int argc, char** argv) {
     app.add_option("--length", o.length, "paddle face to the wall, m")->capture_default_str();
     app.add_option("--periods", o.periods)->capture_default_str();
     app.add_option("--threads", o.threads)->capture_default_str();
-    app.add_option("--shifting", o.shifting)->capture_default_str();
-    app.add_option("--difference-form", o.differenceForm)->capture_default_str();
-    app.add_option("--momentum", o.momentum)->capture_default_str();
+    app.add_option("--shifting", o.shifting, "negative: the 2D wave default, 0.2")->capture_default_str();
+    app.add_option("--difference-form", o.differenceForm, "negative: the 2D wave default, 0")->capture_default_str();
+    app.add_option("--momentum", o.momentum, "negative: dfsph's default, 0.7")->capture_default_str();
     app.add_option("--max-iterations", o.maxIterations)->capture_default_str();
     app.add_option("--trace", o.trace, "write PREFIX_on.csv / PREFIX_off.csv")->capture_default_str();
     app.add_option("--absorption", absorption)->check(CLI::IsMember({"on", "off", "both"}))->capture_default_str();
