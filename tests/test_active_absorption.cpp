@@ -89,9 +89,9 @@ TEST(ActiveAbsorption, AbsorbsAWaveComingBackAndIgnoresAMeasurementBias) {
 }
 
 /// The wave-height envelopes (periods 10-15, 25-30) at three gauges of a 2D flume closed by
-/// a wall 3 m from the paddle, 2 cm, H = 0.04 m, T = 1 s in 0.3 m of water, at shifting 0.2,
-/// difference form 0.5, no heavy ball and up to 1000 density iterations (the run of
-/// `tide_closed_flume --absorption on --shifting 0.2 --difference-form 0.5`, bench/closed_flume.cpp).
+/// a wall 2.74 m from the paddle, 2 cm, H = 0.04 m, T = 1 s in 0.3 m of water, at the 2D wave
+/// defaults and up to 1000 density iterations; the gauges at a quarter, half and three quarters
+/// of the way (the run of `tide_closed_flume`, bench/closed_flume.cpp, at its defaults).
 struct Envelopes {
     std::vector<double> early, late;
 };
@@ -99,13 +99,10 @@ Envelopes closedFlume(bool absorb) {
     WaveMakerDef paddle = piston(0.3f, 0.04f, 1.0f, 2.0f);
     paddle.absorption = absorb ? WaveMakerDef::Absorption::On : WaveMakerDef::Absorption::Off;
     SolverDef solver;
-    solver.shifting = 0.2f;
-    solver.differenceForm = 0.5f;
-    solver.momentum = 0.0f;
     solver.maxIterations = 1000;
-    const float spacing = 0.02f, length = 3.1f;
+    const float spacing = 0.02f, length = 2.84f, span = length - paddle.x;
     World world = scenarios::planarFlume(spacing, length, paddle, 0.0f, 1, solver);
-    const std::vector<float> at{0.85f, 1.6f, 2.8f};
+    const std::vector<float> at{paddle.x + 0.25f * span, paddle.x + 0.5f * span, paddle.x + 0.75f * span};
     std::vector<waves::Record> records(at.size(), waves::Record{0.02, 0.02, {}});
     for (int k = 0; k < 1500; ++k) {
         world.advance(0.02);
@@ -119,21 +116,21 @@ Envelopes closedFlume(bool absorb) {
     return e;
 }
 
-// Issue 42's acceptance 4, not met: disabled until it is. It passed (0.993, 1.039, 1.082)
-// while 2D dfsph ran without its divergence solve, which damped 2D waves to a third of their
-// height within a few metres. With it, at the wave settings, the envelopes grow by 1.258,
-// 1.270, 1.094 with absorption and 1.321, 1.112, 0.871 without; without shifting both runs
-// break at the wall after 26-29 periods (docs/notes/waves.md § The 2D divergence solve).
-// With the 2D default kernel (Wendland C2 at 3 spacings) these pinned settings give 0.800,
-// 0.911, 1.307 (gauge 2 reads 0.0065 m: near a node). At the 2D wave defaults (shifting 0.2,
-// momentum 0.7, no difference form; `tide_closed_flume --shifting 0.2 --momentum 0.7`):
-// 1.077, 1.004, 1.119 with absorption, 0.899, 0.877, 1.037 without: neither grows.
-TEST(ClosedFlume, DISABLED_AbsorptionHoldsTheEnvelopeSteady) {
-    const Envelopes on = closedFlume(true);
+// Issue 42's acceptance 4. A piston that does not absorb reflects like a wall, so the flume is a
+// cavity whose forced standing wave grows like 1/|sin kL|, without bound in linear theory where
+// kL = nπ. 2.74 m (two Airy wave lengths, 2.746 m) is the middle of the resonance a scan of
+// lengths found at the defaults (docs/notes/waves.md § The closed flume at resonance) and the
+// gauges stand on the standing wave's antinodes. Measured: 0.943, 0.952, 1.035 with absorption,
+// 1.469, 1.500, 1.535 without (0.0533 against 0.113 m at the first gauge over periods 25-30).
+// At 3.0 m (kL = 4.37π, off resonance) neither grew: 1.077, 1.004, 1.119 and 0.899, 0.877, 1.037.
+TEST(ClosedFlume, AbsorptionHoldsTheEnvelopeSteadyWhereWithoutItTheResonantFlumeGrows) {
+    const Envelopes on = closedFlume(true), off = closedFlume(false);
     for (std::size_t g = 0; g < on.early.size(); ++g) {
-        std::printf("gauge %zu: absorbing %.4f -> %.4f m\n", g, on.early[g], on.late[g]);
+        std::printf("gauge %zu: absorbing %.4f -> %.4f m, reflecting %.4f -> %.4f m\n", g, on.early[g], on.late[g],
+                    off.early[g], off.late[g]);
         EXPECT_GT(on.early[g], 0.01) << "gauge " << g;  // waves, not noise
         EXPECT_NEAR(on.late[g] / on.early[g], 1.0, 0.10) << "gauge " << g;
+        EXPECT_GT(off.late[g] / off.early[g], 1.25) << "gauge " << g;  // the contrast: it keeps growing
     }
 }
 
