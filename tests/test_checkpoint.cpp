@@ -105,9 +105,10 @@ TEST(Checkpoint, MovingObstaclesResumeBitIdentically) {
 std::string downgrade(const std::string& latest, std::uint32_t version) {
     constexpr std::size_t header = 8 + 4 + 4 + 8 + 4, unconverged = header + 16 + 48, divergence = unconverged + 12 + 80;
     // Version 5's count of body scalars and version 6's of wave maker scalars (0 and 0: no
-    // bodies, no wave maker) sit before the application block "app" (its 8-byte length and 3 bytes).
+    // bodies, no wave maker), then version 7's two ocean counts (8 bytes each), sit before the
+    // application block "app" (its 8-byte length and 3 bytes).
     std::string current = latest;
-    current.erase(current.size() - 3 - 8 - 8, 8);
+    current.erase(current.size() - 3 - 8 - 16 - 8, 8 + 16);
     std::string payload = current.substr(header, divergence - header) + current.substr(divergence + 8);
     if (version < 3) payload = payload.substr(0, unconverged - header) + payload.substr(unconverged + 12 - header);
     std::string old = current.substr(0, header);
@@ -149,7 +150,7 @@ TEST(Checkpoint, Version2And3FilesStillResume) {
         (void)io::decodeCheckpoint(v9, "memory");
         ADD_FAILURE() << "a version 9 checkpoint was read";
     } catch (const io::CheckpointError& e) {
-        EXPECT_NE(std::string(e.what()).find("version 9, this tide reads 2 to 6"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("version 9, this tide reads 2 to 7"), std::string::npos) << e.what();
     }
 }
 

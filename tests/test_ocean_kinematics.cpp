@@ -219,6 +219,42 @@ TEST(OceanKinematics, LinearSurfaceConditionsHold) {
     std::printf("kinematic surface condition: worst |deta/dt - v| %.2e Hs wp\n", worst);
 }
 
+TEST(OceanKinematics, MeanElevationOverARectangleIsTheAverageOfTheSurface) {
+    // Sea::meanElevation (the near field's water, RelaxationZones::levelError) against the
+    // midpoint rule on n and 2n cells a side extrapolated (Richardson: its error falls as h⁴),
+    // over a rectangle of a few wavelengths, a line (2D), a point, and a square smaller than a wave.
+    const OceanDef def = acceptanceSea();
+    const Sea sea = Sea::fromDef(def);
+    const double lp = 2.0 * kPi / scalesOf(def).kp;
+    const auto midpointOn = [&](glm::dvec2 lo, glm::dvec2 hi, double t, int n) {
+        const int nx = hi.x > lo.x ? n : 1, nz = hi.y > lo.y ? n : 1;
+        double sum = 0.0;
+        for (int i = 0; i < nx; ++i)
+            for (int j = 0; j < nz; ++j)
+                sum += sea.elevation(lo.x + (i + 0.5) * (hi.x - lo.x) / nx, lo.y + (j + 0.5) * (hi.y - lo.y) / nz, t);
+        return sum / (nx * nz);
+    };
+    const auto midpoint = [&](glm::dvec2 lo, glm::dvec2 hi, double t) {
+        return (4.0 * midpointOn(lo, hi, t, 400) - midpointOn(lo, hi, t, 200)) / 3.0;
+    };
+    const struct {
+        glm::dvec2 lo, hi;
+    } cases[] = {{{-10.0, 5.0}, {-10.0 + 2.3 * lp, 5.0 + 1.7 * lp}},
+                 {{3.0, 7.0}, {3.0 + 4.1 * lp, 7.0}},
+                 {{3.0, 7.0}, {3.0, 7.0}},
+                 {{0.0, 0.0}, {0.3 * lp, 0.3 * lp}}};
+    for (const auto& c : cases)
+        for (const double t : {0.0, 13.7}) {
+            const double exact = sea.meanElevation(c.lo, c.hi, t), summed = midpoint(c.lo, c.hi, t);
+            std::printf("mean elevation over %.1f x %.1f m at %.1f s: %.8f m, summed %.8f m\n", c.hi.x - c.lo.x,
+                        c.hi.y - c.lo.y, t, exact, summed);
+            EXPECT_NEAR(exact, summed, 1e-6 * def.waves.hs) << c.hi.x - c.lo.x << " x " << c.hi.y - c.lo.y << " m";
+        }
+    EXPECT_EQ(sea.meanElevation({3.0, 7.0}, {3.0, 7.0}, 13.7), sea.elevation(3.0, 7.0, 13.7));
+    // Over a large sea the mean tends to zero (a per cent of Hs over 2.3 x 1.7 wavelengths).
+    EXPECT_LT(std::abs(sea.meanElevation({-10.0, 5.0}, {-10.0 + 2.3 * lp, 5.0 + 1.7 * lp}, 0.0)), 0.05 * def.waves.hs);
+}
+
 TEST(OceanKinematics, FloorIsImpermeableAndPressureHydrostaticAtRest) {
     const Sea sea = Sea::fromDef(acceptanceSea());
     const WaterSample floor = sea.sample({10.0, -30.0, -4.0}, 1.0, Stretching::None);

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <numbers>
+#include <random>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -109,6 +110,48 @@ TEST(OceanZones, WeightRisesIntoTheBandAndVanishesInside) {
     for (int k = 0; k < 40; ++k) zones.relax(many, 5.0, 0.001, 1);
     EXPECT_NEAR(one.velocity[0].x, many.velocity[0].x, 1e-5);
     EXPECT_NEAR(one.velocity[0].y, many.velocity[0].y, 1e-5);
+}
+
+// The near field's water: the zones' exchange against the far field's mean level sets how
+// close a particle may stand before the refill adds another (RelaxationZones::refillRoom).
+TEST(OceanZones, TheRefillAddsLessWhereTheNearFieldHoldsMoreWaterThanTheSea) {
+    const OceanDef o = regularOcean(0.1, 2.0, 0.5, {OceanSide::MinusX, OceanSide::PlusX}, 1.0);
+    ocean::NearField near;
+    near.min = {0.0f, 0.0f, 0.0f};
+    near.max = {8.0f, 1.0f, 0.0f};  // 2D: the plane z = 0
+    near.stillWaterY = 0.5;
+    near.spacing = 0.05f;
+    near.layer = 0.05;
+    near.latticeOrigin = {0.0f, 0.0f, -0.025f};  // points at (k + ½) spacing: z = 0
+    ocean::RelaxationZones zones(o, near, 9.81);
+    // Before the ramp the sea is still: 16 particles of 0.05 x 0.05 m² over 8 m are 5 mm.
+    EXPECT_DOUBLE_EQ(zones.levelError(0, 0.0), 0.0);
+    EXPECT_NEAR(zones.levelError(16, 0.0), 0.005, 1e-9);
+    EXPECT_NEAR(zones.levelError(-8, 0.0), -0.0025, 1e-9);
+    // Later the far field's mean elevation over the near field is subtracted.
+    const ocean::Sea sea = ocean::Sea::fromDef(o);
+    EXPECT_NEAR(zones.levelError(16, 7.3), 0.005 - sea.meanElevation({0.0, 0.0}, {8.0, 0.0}, 7.3), 1e-9);
+    EXPECT_DOUBLE_EQ(zones.refillRoom(0.0), ocean::kRefillRoomSpacings);
+    EXPECT_DOUBLE_EQ(zones.refillRoom(0.05), ocean::kRefillRoomSpacings + ocean::kRefillRoomSwing);
+    EXPECT_DOUBLE_EQ(zones.refillRoom(-0.05), ocean::kRefillRoomSpacings - ocean::kRefillRoomSwing);
+    EXPECT_GT(zones.refillRoom(0.002), zones.refillRoom(0.001));
+    // Still water in the strips with a third of its particles missing and the rest shaken by
+    // up to a fifth of a spacing: the refill fills holes, fewer the more water the near field holds.
+    std::mt19937 random(43);
+    std::uniform_real_distribution<float> shake(-0.01f, 0.01f), draw(0.0f, 1.0f);
+    ParticleStore water;
+    for (int i = 0; i < 160; ++i)
+        for (int j = 0; j < 10; ++j)
+            if ((i < 4 || i >= 156) && draw(random) > 0.3f) water.append({0.025f + 0.05f * i + shake(random), 0.025f + 0.05f * j + shake(random), 0.0f},
+                                                glm::vec3(0.0f), 1.0f, 0, 1000.0f);
+    const auto added = [&](double levelError) {
+        ParticleStore p = water;
+        return zones.refill(p, 0.0, levelError, 1.0f, 0, 1000.0f, 1u << 20, [](const glm::vec3&) { return true; });
+    };
+    const std::uint32_t low = added(-0.05), even = added(0.0), high = added(0.05);
+    std::printf("refilled with the near field 5 cm low / level / 5 cm high: %u / %u / %u particles\n", low, even, high);
+    EXPECT_GT(low, even);
+    EXPECT_GT(even, high);
 }
 
 /// RMS of the lattice's error against the direct sum, over the RMS of the field itself, at

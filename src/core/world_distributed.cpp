@@ -237,7 +237,7 @@ void coupleOverRanks(World::Impl& w, double end) {
     const std::uint32_t base = w.particles.nextId();
     std::vector<std::uint64_t> visits;
     w.zones->refill(
-        w.particles, end, w.oceanMass(), w.oceanMaterial, w.materials[w.oceanMaterial].restDensity,
+        w.particles, end, w.oceanLevelError(end), w.oceanMass(), w.oceanMaterial, w.materials[w.oceanMaterial].restDensity,
         std::numeric_limits<std::uint32_t>::max(),
         [&](const glm::vec3& x) { return d.split->ownerOf(d.split->cellOf(x)) == self && w.roomFor(x, World::Impl::Fill::Block); },
         w.threads, &visits);

@@ -175,6 +175,11 @@ struct World::Impl {
         }
         return {lo, hi};
     }
+    /// The near field's level over the far field's at time t (RelaxationZones::levelError),
+    /// from every particle the zones have exchanged so far (every rank's), m.
+    [[nodiscard]] double oceanLevelError(double t) const {
+        return zones->levelError(static_cast<std::int64_t>(stats.oceanAdded) - static_cast<std::int64_t>(stats.oceanRemoved), t);
+    }
     /// Relaxation, outflow and inflow of the ocean's zones over a step of dt ending at `end`.
     void couple(double end, double dt) {
         zones->relax(particles, end, dt, threads);
@@ -183,7 +188,7 @@ struct World::Impl {
             return;
         }
         stats.oceanRemoved += zones->removeOutflow(particles);
-        stats.oceanAdded += zones->refill(particles, end, oceanMass(), oceanMaterial,
+        stats.oceanAdded += zones->refill(particles, end, oceanLevelError(end), oceanMass(), oceanMaterial,
                                           materials[oceanMaterial].restDensity, def.capacity,
                                           [&](const glm::vec3& x) { return roomFor(x, Fill::Block); }, threads);
     }

@@ -163,6 +163,8 @@ std::string encodeCheckpoint(const WorldState& s, std::string_view application) 
     payload.putArray(s.bodyState);
     payload.put<std::uint32_t>(static_cast<std::uint32_t>(s.paddleState.size()));
     payload.putArray(s.paddleState);
+    payload.put(s.stats.oceanAdded);
+    payload.put(s.stats.oceanRemoved);
     payload.putBytes(application);
 
     Writer file;
@@ -225,6 +227,10 @@ Checkpoint decodeCheckpoint(std::string_view bytes, const std::string& source) {
     r.getArray(s.solverState, r.get<std::uint32_t>("solver scalar count"), "solver scalars");
     if (version >= 5) r.getArray(s.bodyState, r.get<std::uint32_t>("body scalar count"), "body state");
     if (version >= 6) r.getArray(s.paddleState, r.get<std::uint32_t>("wave maker scalar count"), "wave maker state");
+    if (version >= 7) {
+        s.stats.oceanAdded = r.get<std::uint64_t>("ocean exchange");
+        s.stats.oceanRemoved = r.get<std::uint64_t>("ocean exchange");
+    }
     c.application = r.getBytes("application block");
     if (r.left() != 0) r.fail(std::to_string(r.left()) + " bytes after the end of the state");
     return c;

@@ -18,9 +18,6 @@ namespace {
 /// The inflow strip along an open face, in spacings: deep enough that the particles pushed out
 /// by the pressure at the open edge leave a hole the refill sees.
 constexpr double kStripSpacings = 2.0;
-/// A lattice point nearer than this (in spacings) to a particle has no room (World's blocks
-/// keep the same distance to solids).
-constexpr double kRoomSpacings = 0.9;
 
 int axisOf(OceanSide side) { return side == OceanSide::MinusX || side == OceanSide::PlusX ? 0 : 2; }
 bool maxSide(OceanSide side) { return side == OceanSide::PlusX || side == OceanSide::PlusZ; }
@@ -214,8 +211,22 @@ std::uint32_t RelaxationZones::removeOutflow(ParticleStore& particles) {
     return removed;
 }
 
-std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float mass, MaterialIndex material,
-                                      float restDensity, std::uint32_t capacity,
+double RelaxationZones::levelError(std::int64_t exchanged, double t) const {
+    const bool planar = !(near_.max.z > near_.min.z);
+    const double s = near_.spacing;
+    const double cell = planar ? s * near_.layer : s * near_.layer * s;  // m² in 2D, m³ in 3D
+    const double area = (near_.max.x - near_.min.x) * (planar ? 1.0 : near_.max.z - near_.min.z);
+    const double far = ramp(t) * sea_.meanElevation({near_.min.x, near_.min.z}, {near_.max.x, near_.max.z}, t);
+    return static_cast<double>(exchanged) * cell / area - far;
+}
+
+double RelaxationZones::refillRoom(double levelError) const {
+    return kRefillRoomSpacings +
+           std::clamp(kRefillRoomPerSpacing * levelError / near_.spacing, -kRefillRoomSwing, kRefillRoomSwing);
+}
+
+std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, double levelError, float mass,
+                                      MaterialIndex material, float restDensity, std::uint32_t capacity,
                                       const std::function<bool(const glm::vec3&)>& room, int threads,
                                       std::vector<std::uint64_t>* visits) {
     const double r = ramp(t);
@@ -231,7 +242,7 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
                                      static_cast<long>(std::floor((hi - o) / step[axis] - 0.5 + 1e-6))};
     };
     // Each side's strip of lattice points (along its axis, across it, up) and which of them
-    // have a particle within kRoomSpacings: every particle near a strip marks the few points
+    // have a particle within the room's distance: every particle near a strip marks the few points
     // within reach (a sort of those particles by cell each step was 2 % of an ocean's step).
     // The points added below are a spacing apart, so they never take one another's room;
     // where two strips meet (a corner) a point added by one is marked taken in the other.
@@ -259,7 +270,8 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, float 
     }
     taken_.resize(strips.size());
     for (std::size_t n = 0; n < strips.size(); ++n) taken_[n].assign(strips[n].count(), 0);
-    const double r2 = kRoomSpacings * kRoomSpacings * s * s;
+    const double roomSpacings = refillRoom(levelError);
+    const double r2 = roomSpacings * roomSpacings * s * s;
     const glm::dvec3 origin(near_.latticeOrigin);
     // The lattice indices along `axis` whose points lie within the room's reach of coordinate
     // p along it (a necessary condition of the distance test: at most two).

@@ -153,6 +153,16 @@ double Sea::elevationRate(double x, double z, double t) const {
     return rate;
 }
 
+double Sea::meanElevation(glm::dvec2 lo, glm::dvec2 hi, double t) const {
+    const glm::dvec2 centre = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+    // sin(u)/u, 1 − u²/6 near 0 (its error there, u⁴/120, below double's).
+    const auto sinc = [](double u) { return std::abs(u) < 1e-4 ? 1.0 - u * u / 6.0 : std::sin(u) / u; };
+    double mean = 0.0;
+    for (const WaveComponent& c : components_)
+        mean += c.amplitude * std::cos(phaseAt(c, centre.x, centre.y, t)) * sinc(c.kx * half.x) * sinc(c.kz * half.y);
+    return mean;
+}
+
 glm::dvec2 Sea::horizontalDisplacement(double x, double z, double t) const {
     glm::dvec2 d(0.0);
     for (std::size_t i = 0; i < components_.size(); ++i) {

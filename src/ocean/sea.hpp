@@ -112,6 +112,10 @@ public:
     [[nodiscard]] double elevation(double x, double z, double t) const;
     /// ∂η/∂t at (x, z), m/s.
     [[nodiscard]] double elevationRate(double x, double z, double t) const;
+    /// The mean of η over the rectangle [lo.x, hi.x] × [lo.y, hi.y] of (x, z) at time t, m
+    /// (a side of zero length: along the other only). Exact: each component's cosine averages
+    /// to its value at the centre times sinc(k_x L_x/2) sinc(k_z L_z/2).
+    [[nodiscard]] double meanElevation(glm::dvec2 lo, glm::dvec2 hi, double t) const;
     /// The horizontal displacement of the surface particle that rests at (x, z), m, linear:
     /// −Σ a coth(kd) sin θ k/|k| (the time integral of the surface velocity; Tessendorf 2001's
     /// "choppy" displacement, eq. 29, with its λ = −1 and finite depth). The surface point

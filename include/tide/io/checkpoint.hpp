@@ -26,8 +26,10 @@ namespace tide::io {
 
 /// The format version written (2: dye concentration per particle; 3: the count of
 /// unconverged pressure solves in the stats; 4: the divergence solve's iteration sum after
-/// the stats' phase times; 5: the floating bodies' state after the solver's scalars; 6: the wave makers' active absorption after the bodies'); it reads back to kOldestCheckpointVersion and refuses the others.
-inline constexpr std::uint32_t kCheckpointVersion = 6;
+/// the stats' phase times; 5: the floating bodies' state after the solver's scalars; 6: the wave makers' active absorption after the bodies'; 7: the particles an ocean's zones
+/// added and removed, after the wave makers': its refill follows them); it reads back to
+/// kOldestCheckpointVersion and refuses the others.
+inline constexpr std::uint32_t kCheckpointVersion = 7;
 inline constexpr std::uint32_t kOldestCheckpointVersion = 2;
 
 /// A checkpoint that cannot be used; what() names the file and the problem.
