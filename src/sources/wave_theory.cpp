@@ -6,6 +6,8 @@
 #include <random>
 #include <stdexcept>
 
+#include "sources/second_order_wavemaker_schaffer1996.hpp"
+
 namespace tide::waves {
 
 double waveNumber(double omega, double depth, double g) {
@@ -81,10 +83,12 @@ std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g)
         c.amplitude = c.waveAmplitude / transfer(def.type, kd);
         out.push_back(c);
         if (def.order == 2 && def.type == WaveMakerDef::Type::Piston) {
-            // Madsen 1971: the stroke's second harmonic, at 2ω and twice the phase (0 here).
+            // Schäffer 1996: the stroke's second harmonic, Re C sin 2ωt + Im C cos 2ωt.
+            const std::complex<double> stroke = pistonSecondOrderStroke(def.waveHeight, c.omega, d, g);
             PaddleComponent second;
             second.omega = 2.0 * c.omega;
-            second.amplitude = pistonSecondOrderAmplitude(def.waveHeight, kd, d);
+            second.amplitude = std::abs(stroke);
+            second.phase = std::arg(stroke);
             out.push_back(second);
         }
         return out;

@@ -53,8 +53,9 @@ private:
 /// H, wave number k in depth d, X₂(t) = a₂ sin(2ωt + 2φ) next to X₁ = (S/2) sin(ωt + φ):
 /// a₂ = H²/(32 d) (3 cosh kd / sinh³ kd − 2/m₁), m₁ = H/S the linear transfer function
 /// (Madsen 1971, "On the generation of long waves", JGR 76(36), as written by Altomare et al.
-/// 2017, Coastal Engineering 127, eq. 8). It cancels the free second harmonic the linear
-/// stroke radiates, leaving only Stokes' bound one.
+/// 2017, Coastal Engineering 127, eq. 8): the long-wave limit of the stroke that cancels the
+/// free second harmonic the linear stroke radiates. Wave makers use the full theory
+/// (pistonSecondOrderStroke, Schäffer 1996), to which this tends as kd → 0.
 double pistonSecondOrderAmplitude(double waveHeight, double kd, double depth);
 
 /// The paddle components of a wave maker: one for regular waves (stroke from the transfer
