@@ -408,6 +408,59 @@ TEST(SecondOrderIrregular, LongWavesGiveMadsensPairBalanceAndNarrowBandsTheSetDo
     }
 }
 
+TEST(SecondOrderIrregular, ComponentsOfAnIrregularStrokeAddEveryPairByFrequency) {
+    // Two components: the second-order stroke is the self terms (half the pair's sum), the pair's
+    // sum and difference with their phases, merged into 2ω₁, ω₁ + ω₂, 2ω₂ and ω₂ − ω₁.
+    const double d = 0.3;
+    std::vector<PaddleComponent> first(2);
+    first[0].omega = 5.0, first[0].amplitude = 0.012, first[0].phase = 0.7;
+    first[1].omega = 6.5, first[1].amplitude = 0.006, first[1].phase = -2.1;
+    const std::vector<PaddleComponent> second = pistonSecondOrderComponents(first, d, g);
+    ASSERT_EQ(second.size(), 4u);
+    EXPECT_NEAR(second[0].omega, 1.5, 1e-12);
+    EXPECT_NEAR(second[1].omega, 10.0, 1e-12);
+    EXPECT_NEAR(second[2].omega, 11.5, 1e-12);
+    EXPECT_NEAR(second[3].omega, 13.0, 1e-12);
+    const auto stroke = [](std::complex<double> c, double w, double phase, double t) {
+        return c.real() * std::sin(w * t + phase) + c.imag() * std::cos(w * t + phase);
+    };
+    const SecondOrderPair p = pistonSecondOrderPair(0.006, 6.5, 0.012, 5.0, d, g);
+    const std::complex<double> s0 = pistonSecondOrderPair(0.012, 5.0, 0.012, 5.0, d, g).sum;
+    const std::complex<double> s1 = pistonSecondOrderPair(0.006, 6.5, 0.006, 6.5, d, g).sum;
+    for (const double t : {0.0, 0.37, 1.9, 4.2}) {
+        const double expected = stroke(0.5 * s0, 10.0, 1.4, t) + stroke(0.5 * s1, 13.0, -4.2, t) +
+                                stroke(p.sum, 11.5, 0.7 - 2.1, t) + stroke(p.difference, 1.5, -2.1 - 0.7, t);
+        double made = 0.0;
+        for (const PaddleComponent& c : second) {
+            EXPECT_EQ(c.waveAmplitude, 0.0);
+            made += c.amplitude * std::sin(c.omega * t + c.phase);
+        }
+        EXPECT_NEAR(made, expected, 1e-9 * std::abs(p.difference)) << t;
+    }
+    // A spectrum from a piston with order 2: its N components, then 3N − 2 second-order ones
+    // (2N − 1 sums, N − 1 differences on the equal bands), none making a wave of its own; the
+    // first N as with order 1. A flap's spectrum keeps first order (its validation refuses 2).
+    WaveMakerDef def;
+    def.depth = 0.4f;
+    def.spectrum = {WaveSpectrumDef::Type::Jonswap, 0.05f, 1.2f, 3.3f, 7, 16, 0.5f, 3.0f};
+    const std::vector<PaddleComponent> linear = paddleComponents(def);
+    def.order = 2;
+    const std::vector<PaddleComponent> both = paddleComponents(def);
+    ASSERT_EQ(both.size(), 16u + 46u);
+    for (std::size_t i = 0; i < 16; ++i) EXPECT_EQ(both[i].amplitude, linear[i].amplitude);
+    const double band = linear[1].omega - linear[0].omega;
+    for (std::size_t i = 16; i < both.size(); ++i) {
+        EXPECT_EQ(both[i].waveAmplitude, 0.0);
+        // On the grid: a difference n·Δω or a sum 2ω₀ + n·Δω (2ω₀/Δω = 7.4 here, so none coincide).
+        const double difference = both[i].omega / band, sum = (both[i].omega - 2.0 * linear[0].omega) / band;
+        EXPECT_TRUE(std::abs(difference - std::round(difference)) < 1e-6 || std::abs(sum - std::round(sum)) < 1e-6) << i;
+    }
+    EXPECT_NEAR(both[16].omega, band, 1e-9);
+    EXPECT_NEAR(both.back().omega, 2.0 * linear.back().omega, 1e-9);
+    def.type = WaveMakerDef::Type::Flap;
+    EXPECT_EQ(paddleComponents(def).size(), 16u);
+}
+
 TEST(SolitaryWave, GoringStrokeFollowsTheWaterUnderTheWave) {
     const double d = 0.25, H = 0.05;
     const SolitaryStroke s(H, d);
@@ -474,12 +527,20 @@ TEST(WaveMakerInput, WavesTheTankOrTheSpacingCannotHoldAreRefusedByFieldAndValue
     def.spectrum.peakPeriod = 3.0f;
     EXPECT_NE(refusal(def).find("wavemaker.spectrum.tp"), std::string::npos) << refusal(def);
     def.spectrum.type = WaveSpectrumDef::Type::None;
-    // Order: 1 or 2, and 2 only for a piston's regular waves.
+    // Order: 1 or 2, and 2 only for a piston, regular waves or a spectrum.
     def.order = 3;
     EXPECT_NE(refusal(def).find("wavemaker.order: must be 1 or 2, got 3"), std::string::npos);
     def.order = 2;
+    EXPECT_EQ(refusal(def), "");
+    def.spectrum = {WaveSpectrumDef::Type::Jonswap, 0.03f, 1.2f, 3.3f, 1, 64, 0.5f, 3.0f};
+    EXPECT_EQ(refusal(def), "");
     def.type = WaveMakerDef::Type::Flap;
-    EXPECT_NE(refusal(def).find("wavemaker.order: 2 is for regular waves from a piston"), std::string::npos);
+    EXPECT_NE(refusal(def).find("wavemaker.order: 2 is for a piston's regular or irregular waves, got 2 with a flap"),
+              std::string::npos)
+        << refusal(def);
+    def.spectrum.type = WaveSpectrumDef::Type::None;
+    EXPECT_NE(refusal(def).find("got 2 with a flap"), std::string::npos);
+    def.type = WaveMakerDef::Type::Piston;
     // A solitary wave above 0.6 of the depth.
     def.order = 1;
     def.type = WaveMakerDef::Type::Solitary;

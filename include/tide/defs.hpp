@@ -381,9 +381,9 @@ struct WaveMakerDef {
     float rampTime = 2.0f;      ///< s; the stroke grows as ½(1 − cos(π t/ramp)) up to this time
     WaveSpectrumDef spectrum;   ///< irregular waves instead of waveHeight/period, when its type is not None
     /// Order of the generation theory (scene key wavemaker.order, DualSPHysics' waveorder):
-    /// 1, linear (the paddle also radiates a spurious free second harmonic), or 2, with the
-    /// second-order correction of the stroke that cancels it (Madsen 1971; regular waves from
-    /// a piston only).
+    /// 1, linear (the paddle also radiates spurious free second-order waves), or 2, with the
+    /// second-order correction of the stroke that cancels them (Schäffer 1996, a piston only:
+    /// the second harmonic of regular waves; every pair's super- and subharmonics of a spectrum).
     int order = 1;
     /// Active absorption at the paddle (scene key wavemaker.absorption; Schäffer & Klopman
     /// 2000, sources/active_absorption_schaffer_klopman2000.hpp): the piston also moves with the

@@ -24,10 +24,9 @@ std::string show(double v) {
 void checkWaveFitsTank(const WaveMakerDef& def, float length, float spacing, double g) {
     if (def.order != 1 && def.order != 2)
         throw std::invalid_argument("wavemaker.order: must be 1 or 2, got " + std::to_string(def.order));
-    const bool regular = def.type != WaveMakerDef::Type::Solitary && def.spectrum.type == WaveSpectrumDef::Type::None;
-    if (def.order == 2 && !(regular && def.type == WaveMakerDef::Type::Piston))
-        throw std::invalid_argument("wavemaker.order: 2 is for regular waves from a piston, got 2 with " +
-                                    std::string(def.type == WaveMakerDef::Type::Flap ? "a flap" : def.type == WaveMakerDef::Type::Solitary ? "a solitary wave" : "a spectrum"));
+    if (def.order == 2 && def.type != WaveMakerDef::Type::Piston)
+        throw std::invalid_argument("wavemaker.order: 2 is for a piston's regular or irregular waves, got 2 with " +
+                                    std::string(def.type == WaveMakerDef::Type::Flap ? "a flap" : "a solitary wave"));
     if (def.absorption == WaveMakerDef::Absorption::On && def.type != WaveMakerDef::Type::Piston)
         throw std::invalid_argument(std::string("wavemaker.absorption: active absorption is for a piston making regular "
                                                 "or irregular waves, got true with ") +

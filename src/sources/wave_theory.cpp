@@ -111,6 +111,11 @@ std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g)
         c.phase = 2.0 * std::numbers::pi * (static_cast<double>(random()) / 4294967296.0);
         out.push_back(c);
     }
+    if (def.order == 2 && def.type == WaveMakerDef::Type::Piston) {
+        // Schäffer 1996: every pair's super- and subharmonic, merged by frequency (3N − 2 of them).
+        const std::vector<PaddleComponent> second = pistonSecondOrderComponents(out, d, g);
+        out.insert(out.end(), second.begin(), second.end());
+    }
     return out;
 }
 

@@ -64,7 +64,10 @@ double pistonSecondOrderAmplitude(double waveHeight, double kd, double depth);
 /// each band's centre with wave amplitude a_n = √(2 S(f_n) Δf) and a phase uniform in [0, 2π)
 /// from std::mt19937(seed) (Tucker, Challenor & Carter 1984 discuss why random amplitudes are
 /// not needed for long records); each paddle amplitude is a_n divided by the transfer function
-/// at its own k_n d (Dean & Dalrymple §6.2, superposed linearly).
+/// at its own k_n d (Dean & Dalrymple §6.2, superposed linearly). With `order` 2 a piston's
+/// components are followed by their second-order ones (waveAmplitude 0): regular waves by the
+/// stroke at 2ω (pistonSecondOrderStroke), an irregular sea by the super- and subharmonics of
+/// every pair (pistonSecondOrderComponents; 3N − 2 components on the N equal bands).
 std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g = kGravity);
 
 /// A piston's trajectory for one solitary wave of height H in depth d (Goring 1978, "Tsunamis:
