@@ -297,22 +297,125 @@ TEST(SecondOrderIrregular, APairOfEqualComponentsIsTwiceTheRegularStrokeAndThePa
     EXPECT_THROW((void)pistonSecondOrderPair(0.01, wn, 0.01, 0.0, d, g), std::invalid_argument);
 }
 
-TEST(SecondOrderIrregular, PairStrokesMatchAnIndependentQuadratureAndConvergeInTheModes) {
+/// A first-order piston field Re Σ_j A_j cosh k_j(z+d) e^{i(ωt − k_j x)} made by the stroke
+/// Re[ξ e^{iωt}]: A_j = −ω ξ sinh k_j d/(k_j² N_j), with `modes` evanescent k_j = −iκ_j.
+struct FirstOrderField {
+    double omega;
+    std::complex<double> xi;
+    std::vector<std::complex<double>> k, a;
+};
+FirstOrderField firstOrderField(double omega, std::complex<double> xi, double d, int modes) {
+    FirstOrderField f{omega, xi, {}, {}};
+    f.k.push_back(waveNumber(omega, d));
+    for (int j = 1; j <= modes; ++j) {  // ω² = −gκ tan κd, κd in ((j − ½)π, jπ), by bisection
+        double lo = (j - 0.5) * std::numbers::pi, hi = j * std::numbers::pi;
+        const auto f0 = [&](double y) { return omega * omega * d / g * std::cos(y) + y * std::sin(y); };
+        for (int step = 0; step < 100; ++step) ((f0(0.5 * (lo + hi)) > 0.0) == (f0(lo) > 0.0) ? lo : hi) = 0.5 * (lo + hi);
+        f.k.emplace_back(0.0, -0.5 * (lo + hi) / d);
+    }
+    for (const std::complex<double> k : f.k)
+        f.a.push_back(-omega * xi * std::sinh(k * d) / (k * k * (0.5 * d + std::sinh(2.0 * k * d) / (4.0 * k))));
+    return f;
+}
+/// The same field's complex conjugate, as a field at −ω: k_j → −k_j*, A_j → A_j*, ξ → ξ*.
+FirstOrderField conjugate(FirstOrderField f) {
+    f.omega = -f.omega, f.xi = std::conj(f.xi);
+    for (std::size_t j = 0; j < f.k.size(); ++j) f.k[j] = -std::conj(f.k[j]), f.a[j] = std::conj(f.a[j]);
+    return f;
+}
+
+/// The cancelling stroke ξ₂ at Ω = ω_a + ω_b > 0 of two distinct components, by brute force: the
+/// free-surface forcing −∂_t(∇φ_a·∇φ_b) + (1/g) φ_a,t ∂_z(φ_b,tt + g φ_b,z) of each mode pair as it
+/// comes, averaged over the two orders, each particular solution with its own denominator
+/// gλ sinh λd − Ω² cosh λd, and the paddle condition φ₂,x = X₂,t − X₁ φ₁,xx projected on the
+/// free wave's cosh K(z+d) by Gauss–Legendre quadrature (no closed-form algebra).
+/// ∇φ_p·∇φ_q at the surface for mode j of p and l of q (the coefficient of e^{i(Ωt − (k_j + k_l)x)}).
+std::complex<double> surfaceGradients(const FirstOrderField& p, std::size_t j, const FirstOrderField& q, std::size_t l,
+                                      double d) {
+    const std::complex<double> kj = p.k[j], kl = q.k[l];
+    return p.a[j] * q.a[l] * (-kj * kl * std::cosh(kj * d) * std::cosh(kl * d) + kj * kl * std::sinh(kj * d) * std::sinh(kl * d));
+}
+/// The particular second-order potential's amplitude (× cosh λ(z+d)) of mode j of a with l of
+/// b: the free-surface forcing −∂_t(∇φ_a·∇φ_b) + (1/g) φ_a,t ∂_z(φ_b,tt + g φ_b,z) as it comes,
+/// averaged over the two orders, over its own gλ sinh λd − Ω² cosh λd.
+std::complex<double> particularPotential(const FirstOrderField& a, std::size_t j, const FirstOrderField& b, std::size_t l,
+                                         double d) {
+    const std::complex<double> i(0.0, 1.0);
+    const double W = a.omega + b.omega;
+    const auto forcing = [&](const FirstOrderField& p, std::size_t pj, const FirstOrderField& q, std::size_t ql) {
+        const std::complex<double> kl = q.k[ql], cl = std::cosh(kl * d);
+        return -i * W * surfaceGradients(p, pj, q, ql, d) +
+               (i * p.omega * p.a[pj] * std::cosh(p.k[pj] * d)) * q.a[ql] *
+                   (g * kl * kl * cl - q.omega * q.omega * kl * std::sinh(kl * d)) / g;
+    };
+    const std::complex<double> lambda = a.k[j] + b.k[l];
+    return 0.5 * (forcing(a, j, b, l) + forcing(b, l, a, j)) / (g * lambda * std::sinh(lambda * d) - W * W * std::cosh(lambda * d));
+}
+
+std::complex<double> bruteForceStroke(const FirstOrderField& a, const FirstOrderField& b, double d) {
+    using C = std::complex<double>;
+    const C i(0.0, 1.0);
+    const double W = a.omega + b.omega, K = waveNumber(W, d);
+    const std::size_t n = a.k.size();
+    std::vector<C> particular(n * n);
+    for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t l = 0; l < n; ++l) particular[j * n + l] = particularPotential(a, j, b, l, d);
+    // 16-point Gauss–Legendre on 8(n + 1) panels over the depth.
+    constexpr double x[8] = {0.0950125098376374, 0.2816035507792589, 0.4580167776572274, 0.6178762444026438,
+                             0.7554044083550030, 0.8656312023878318, 0.9445750230732326, 0.9894009349916499};
+    constexpr double w[8] = {0.1894506104550685, 0.1826034150449236, 0.1691565193950025, 0.1495959888165767,
+                             0.1246289712555339, 0.0951585116824928, 0.0622535239386479, 0.0271524594117541};
+    const int panels = 8 * static_cast<int>(n + 1);
+    C projection = 0.0;
+    for (int p = 0; p < panels; ++p)
+        for (int q = 0; q < 16; ++q) {
+            const double half = 0.5 * d / panels, s = (p + 0.5) * 2.0 * half + (q < 8 ? -x[q] : x[q - 8]) * half;
+            C r = 0.0;  // −X₁ φ₁,xx (each stroke with the other's field, halved) − φ_particular,x
+            for (std::size_t l = 0; l < n; ++l) r += 0.5 * a.xi * b.k[l] * b.k[l] * b.a[l] * std::cosh(b.k[l] * s);
+            for (std::size_t j = 0; j < n; ++j) r += 0.5 * b.xi * a.k[j] * a.k[j] * a.a[j] * std::cosh(a.k[j] * s);
+            for (std::size_t j = 0; j < n; ++j)
+                for (std::size_t l = 0; l < n; ++l)
+                    r += i * (a.k[j] + b.k[l]) * particular[j * n + l] * std::cosh((a.k[j] + b.k[l]) * s);
+            projection += half * w[q % 8] * r * std::cosh(K * s);
+        }
+    // No free wave: iΩ ξ₂ sinh(Kd)/K + projection = 0.
+    return -projection * K / (i * W * std::sinh(K * d));
+}
+
+TEST(SecondOrderIrregular, PairStrokesMatchABruteForceQuadratureOfThePaddleCondition) {
+    // Strokes 10 and 7 mm, phases 0: ξ = −iA; the subharmonic pairs n with m's conjugate. The
+    // closed form extrapolates N and 2N modes: so does the brute force here (6 and 12 modes).
+    const double d = 0.25;
+    for (const auto& [tn, tm] : {std::pair{1.0, 1.3}, std::pair{0.7, 1.9}}) {
+        const double wn = 2.0 * std::numbers::pi / tn, wm = 2.0 * std::numbers::pi / tm;
+        std::complex<double> sum[2], difference[2];
+        for (int r = 0; r < 2; ++r) {
+            const FirstOrderField n = firstOrderField(wn, {0.0, -0.010}, d, 6 << r), m = firstOrderField(wm, {0.0, -0.007}, d, 6 << r);
+            // ξ₂ = −iC (phases 0).
+            sum[r] = std::complex<double>(0.0, 1.0) * bruteForceStroke(n, m, d);
+            difference[r] = std::complex<double>(0.0, 1.0) * bruteForceStroke(n, conjugate(m), d);
+        }
+        const SecondOrderPair closed = pistonSecondOrderPair(0.010, wn, 0.007, wm, d, g, 6);
+        const std::complex<double> bruteSum = 2.0 * sum[1] - sum[0], bruteDifference = 2.0 * difference[1] - difference[0];
+        std::printf("T %.1f, %.1f: brute force C+ %+.7f %+.7f i, C- %+.7f %+.7f i mm; closed C+ %+.7f %+.7f i, C- %+.7f %+.7f i\n",
+                    tn, tm, 1e3 * bruteSum.real(), 1e3 * bruteSum.imag(), 1e3 * bruteDifference.real(),
+                    1e3 * bruteDifference.imag(), 1e3 * closed.sum.real(), 1e3 * closed.sum.imag(),
+                    1e3 * closed.difference.real(), 1e3 * closed.difference.imag());
+        EXPECT_LT(std::abs(bruteSum - closed.sum), 1e-7 * std::abs(closed.sum));
+        EXPECT_LT(std::abs(bruteDifference - closed.difference), 1e-7 * std::abs(closed.difference));
+    }
+}
+
+TEST(SecondOrderIrregular, PairStrokesConvergeInTheModes) {
     // d 0.25 m, T_n 1.0 s, T_m 1.3 s (kd 1.20, 0.86), strokes 10 and 7 mm. Converged (800 and
-    // 1600 modes extrapolated, /work/schaffer-pairs/pairs.cpp): C⁺ = 0.196263 + 0.020694i mm,
-    // C⁻ = −1.499148 + 0.003091i mm. There, the closed form equals to 7 digits, for 0 to 20
-    // modes, a brute-force solution: the raw (unsymmetrised) free-surface forcing of the pair,
-    // each particular solution with its own denominator, the paddle condition projected on
-    // cosh K(z+d) by Gauss–Legendre quadrature, the conjugate component made by conjugating the
-    // first-order field; and the pair's bound waves (its particular solution for the progressive
-    // modes) equal Sharma & Dean's sum and difference kernels (as WAFO writes them) to 9 digits.
+    // 1600 modes extrapolated): C⁺ = 0.196263 + 0.020694i mm, C⁻ = −1.499148 + 0.003091i mm.
     const double d = 0.25, wn = 2.0 * std::numbers::pi / 1.0, wm = 2.0 * std::numbers::pi / 1.3;
     const std::complex<double> sum(0.196263e-3, 0.020694e-3), difference(-1.499148e-3, 0.003091e-3);
     const SecondOrderPair p = pistonSecondOrderPair(0.010, wn, 0.007, wm, d, g);
     EXPECT_LT(std::abs(p.sum - sum), 1e-4 * std::abs(sum)) << p.sum;
     EXPECT_LT(std::abs(p.difference - difference), 2e-5 * std::abs(difference)) << p.difference;
     // The evanescent sums converge as 1/N, the extrapolation of N and 2N as 1/N²: the error
-    // falls about 4 times from 25 to 50 modes, and 200 give 1e-6.
+    // falls about 4 times from 25 to 50 modes, and 200 give 4e-6.
     const double e25 = std::abs(pistonSecondOrderPair(0.010, wn, 0.007, wm, d, g, 25).sum - sum);
     const double e50 = std::abs(p.sum - sum);
     const double e200 = std::abs(pistonSecondOrderPair(0.010, wn, 0.007, wm, d, g, 200).sum - sum);
@@ -356,6 +459,24 @@ SecondOrderPair madsenPair(double An, double wn, double Am, double wm, double d)
 }
 
 TEST(SecondOrderIrregular, LongWavesGiveMadsensPairBalanceAndNarrowBandsTheSetDownsFlux) {
+    // The helper's kernels are the pair's bound waves, η₂ = −(1/g)(φ₂,t + ½|∇φ₁|² + η₁ φ₁,zt) at
+    // the surface with the brute force's particular solution of the progressive modes: sum and
+    // difference (with m's conjugate) over η_n η_m.
+    for (const auto& [tn, tm] : {std::pair{1.0, 1.3}, std::pair{0.6, 2.0}}) {
+        const double d = 0.25, wn = 2.0 * std::numbers::pi / tn, wm = 2.0 * std::numbers::pi / tm;
+        const FirstOrderField n = firstOrderField(wn, {0.0, -0.01}, d, 0), m = firstOrderField(wm, {0.0, -0.007}, d, 0);
+        for (const int sign : {1, -1}) {
+            const FirstOrderField b = sign > 0 ? m : conjugate(m);
+            const std::complex<double> i(0.0, 1.0), lambda = n.k[0] + b.k[0];
+            const auto eta = [&](const FirstOrderField& f) { return -i * f.omega / g * f.a[0] * std::cosh(f.k[0] * d); };
+            const auto potentialZT = [&](const FirstOrderField& f) { return i * f.omega * f.k[0] * f.a[0] * std::sinh(f.k[0] * d); };
+            const std::complex<double> eta2 =
+                -(i * (n.omega + b.omega) * particularPotential(n, 0, b, 0, d) * std::cosh(lambda * d) +
+                  0.5 * surfaceGradients(n, 0, b, 0, d) + 0.5 * (eta(n) * potentialZT(b) + eta(b) * potentialZT(n))) / g;
+            const double kernel = boundKernel(wn, wm, n.k[0].real(), m.k[0].real(), d, sign);
+            EXPECT_LT(std::abs(eta2 / (eta(n) * eta(b)) - kernel), 1e-9 * std::abs(kernel)) << tn << " " << tm << " " << sign;
+        }
+    }
     // The helper is Madsen's stroke for n = m (ω_m 1e-7 apart).
     for (const double kd : {0.3, 0.95}) {
         const double d = 0.25, omega = std::sqrt(g * (kd / d) * std::tanh(kd)), A = 0.01;
