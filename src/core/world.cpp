@@ -334,6 +334,7 @@ ObstaclePose World::obstaclePose(std::uint32_t index, double t) const {
 std::uint32_t World::countEscapedParticles() const {
     const Impl& w = *impl_;
     std::uint32_t escaped = 0;
+    const std::vector<WaveMaker::Face> faces = w.paddleFaces();
     for (std::uint32_t i = 0; i < w.particles.size(); ++i) {
         if (w.distribution && isGhost(w, i)) continue;  // counted by its owner
         const glm::vec3& x = w.particles.position[i];
@@ -343,7 +344,7 @@ std::uint32_t World::countEscapedParticles() const {
                           !(x[axis] >= w.def.domainMin[axis] && x[axis] <= w.def.domainMax[axis]));
         for (const ObstacleDef& o : w.fixedObstacles) out = out || signedDistance(o, x) < 0.0f;
         for (const Impl::Mover& m : w.movers) out = out || signedDistance(w.obstacles[m.index], w.moverPose(m, w.time), x) < 0.0f;
-        for (const Impl::Paddle& paddle : w.paddles) out = out || paddle.maker.distanceInFront(w.time, x) < 0.0f;
+        for (const WaveMaker::Face& face : faces) out = out || face.distanceInFront(x) < 0.0f;
         escaped += out;
     }
     if (w.distribution) return static_cast<std::uint32_t>(countOverRanks(w, escaped));
@@ -480,10 +481,11 @@ AddStatus World::fillOcean() {
     const Lattice across = w.blockLattice(w.wallsMin(), {w.wallsMax().x, w.wallsMin().y + w.def.particleSpacing, w.wallsMax().z});
     const auto layers = static_cast<std::uint32_t>(std::lround((near.stillWaterY - near.latticeOrigin.y) / near.layer));
     std::vector<glm::vec3> points;
+    const std::vector<WaveMaker::Face> faces = w.paddleFaces();
     across.forEach([&](const glm::vec3& column) {
         for (std::uint32_t k = 0; k < layers; ++k) {
             const glm::vec3 x(column.x, static_cast<float>(near.latticeOrigin.y + (k + 0.5) * near.layer), column.z);
-            if (w.roomFor(x, Impl::Fill::Block)) points.push_back(x);
+            if (w.roomFor(x, Impl::Fill::Block, faces)) points.push_back(x);
         }
     });
     if (w.particles.size() + points.size() > w.def.capacity) return AddStatus::OverCapacity;

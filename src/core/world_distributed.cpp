@@ -236,10 +236,11 @@ void coupleOverRanks(World::Impl& w, double end) {
     const std::uint32_t first = w.particles.size();
     const std::uint32_t base = w.particles.nextId();
     std::vector<std::uint64_t> visits;
+    const std::vector<WaveMaker::Face> faces = w.paddleFaces();
     w.zones->refill(
         w.particles, end, w.oceanLevelError(end), w.oceanMass(), w.oceanMaterial, w.materials[w.oceanMaterial].restDensity,
         std::numeric_limits<std::uint32_t>::max(),
-        [&](const glm::vec3& x) { return d.split->ownerOf(d.split->cellOf(x)) == self && w.roomFor(x, World::Impl::Fill::Block); },
+        [&](const glm::vec3& x) { return d.split->ownerOf(d.split->cellOf(x)) == self && w.roomFor(x, World::Impl::Fill::Block, faces); },
         w.threads, &visits);
     d.ghost.resize(w.particles.size(), 0);
     // Every rank's added points in visiting order: the ids one process would give them.

@@ -188,9 +188,10 @@ struct World::Impl {
             return;
         }
         stats.oceanRemoved += zones->removeOutflow(particles);
+        const std::vector<WaveMaker::Face> faces = paddleFaces();
         stats.oceanAdded += zones->refill(particles, end, oceanLevelError(end), oceanMass(), oceanMaterial,
                                           materials[oceanMaterial].restDensity, def.capacity,
-                                          [&](const glm::vec3& x) { return roomFor(x, Fill::Block); }, threads);
+                                          [&](const glm::vec3& x) { return roomFor(x, Fill::Block, faces); }, threads);
     }
     /// Loads: the solids (six wall faces, then paddles and obstacles as added; their index is
     /// BoundaryParticles::solid), each obstacle's reference point at rest, the pair forces of
@@ -479,7 +480,8 @@ struct World::Impl {
     /// that sweeps its notches once it turns (filled up to the surface, the spinning cylinder's
     /// third ring read 0.32 of ωR against Couette's 0.41). An emitter's layer (on its own
     /// lattice, moving off at once) keeps the half spacing off every surface.
-    [[nodiscard]] bool roomFor(const glm::vec3& x, Fill fill) const {
+    /// `faces`: paddleFaces() at `time`, computed once for the many points a caller asks about.
+    [[nodiscard]] bool roomFor(const glm::vec3& x, Fill fill, std::span<const WaveMaker::Face> faces) const {
         constexpr float kFillSeparation = 0.9f;
         const float half = 0.499f * def.particleSpacing;
         const float clearance =
@@ -491,9 +493,16 @@ struct World::Impl {
             const float keep = fill == Fill::Block && o.shape == ObstacleDef::Shape::Box ? clearance : half;
             if (!(signedDistance(o, moverPose(m, time), x) > keep)) return false;
         }
-        for (const Paddle& paddle : paddles)
-            if (!(paddle.maker.distanceInFront(time, x) > half)) return false;
+        for (const WaveMaker::Face& face : faces)
+            if (!(face.distanceInFront(x) > half)) return false;
         return fill == Fill::EmitterLayer || !boundary.anyCloserThan(x, kFillSeparation * def.particleSpacing);
+    }
+
+    /// Each paddle's face at `time` (roomFor).
+    [[nodiscard]] std::vector<WaveMaker::Face> paddleFaces() const {
+        std::vector<WaveMaker::Face> faces;
+        for (const Paddle& paddle : paddles) faces.push_back(paddle.maker.face(time));
+        return faces;
     }
 
     /// Whether a step advances the clock (World::step) or holds it (World::settle).
@@ -588,7 +597,8 @@ struct World::Impl {
     [[nodiscard]] std::uint64_t countLattice(const Lattice& lattice, Fill fill) const {
         if (obstacles.empty() && paddles.empty()) return lattice.size();
         std::uint64_t n = 0;
-        lattice.forEach([&](const glm::vec3& x) { n += roomFor(x, fill); });
+        const std::vector<WaveMaker::Face> faces = paddleFaces();
+        lattice.forEach([&](const glm::vec3& x) { n += roomFor(x, fill, faces); });
         return n;
     }
 
@@ -599,8 +609,9 @@ struct World::Impl {
         const float rho0 = materials[material].restDensity;
         const bool everyPoint = obstacles.empty() && paddles.empty();
         particles.makeRoomFor(static_cast<std::uint32_t>(count));
+        const std::vector<WaveMaker::Face> faces = paddleFaces();
         lattice.forEach([&](const glm::vec3& x) {
-            if (everyPoint || roomFor(x, fill)) particles.append(x, velocity, m, material, rho0, concentration);
+            if (everyPoint || roomFor(x, fill, faces)) particles.append(x, velocity, m, material, rho0, concentration);
         });
     }
 

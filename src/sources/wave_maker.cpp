@@ -161,9 +161,9 @@ void WaveMaker::place(double t, std::span<const glm::vec3> rest, std::span<glm::
     }
 }
 
-float WaveMaker::distanceInFront(double t, const glm::vec3& x) const {
+WaveMaker::Face WaveMaker::face(double t) const {
     const Pose p = pose(t);
-    return (x.x - p.point.x) * p.normal.x + (x.y - p.point.y) * p.normal.y;
+    return {p.point, p.normal};
 }
 
 void WaveMaker::project(double t, ParticleStore& particles, float margin, int threads) const {

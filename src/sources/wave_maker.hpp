@@ -69,8 +69,18 @@ public:
     void place(double t, std::span<const glm::vec3> rest, std::span<glm::vec3> position, std::span<glm::vec3> velocity,
                std::span<glm::vec3> acceleration) const;
 
+    /// The face at time t: for many points at one time, the stroke summed once (an irregular
+    /// sea's second-order stroke has hundreds of components).
+    struct Face {
+        glm::vec3 point, normal;  ///< a point on the face; its normal, into the fluid
+        /// Distance of x in front of the face (negative behind it), m.
+        [[nodiscard]] float distanceInFront(const glm::vec3& x) const {
+            return (x.x - point.x) * normal.x + (x.y - point.y) * normal.y;
+        }
+    };
+    [[nodiscard]] Face face(double t) const;
     /// Distance of x in front of the face at time t (negative behind it), m.
-    [[nodiscard]] float distanceInFront(double t, const glm::vec3& x) const;
+    [[nodiscard]] float distanceInFront(double t, const glm::vec3& x) const { return face(t).distanceInFront(x); }
 
     /// Puts particles behind the face at time t back `margin` in front of it, without
     /// velocity into the paddle relative to it.
