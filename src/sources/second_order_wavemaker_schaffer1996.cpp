@@ -29,36 +29,6 @@ double evanescentRoot(int j, double nu) {
     return 0.5 * (lo + hi);
 }
 
-/// C of pistonSecondOrderStroke with the progressive mode and `modes` evanescent ones.
-Complex strokeWithModes(double a, double omega, double d, double g, int modes) {
-    const double k = waveNumber(omega, d, g), bigK = waveNumber(2.0 * omega, d, g);
-    const double nu = omega * omega * d / g;
-    std::vector<Complex> kj(static_cast<std::size_t>(modes) + 1), cj(kj.size());
-    kj[0] = k;
-    for (int j = 1; j <= modes; ++j) kj[static_cast<std::size_t>(j)] = Complex(0.0, -evanescentRoot(j, nu) / d);
-    // Each mode's surface amplitude per unit of paddle displacement (Schäffer eq. 20–21).
-    for (std::size_t j = 0; j < kj.size(); ++j) {
-        const Complex kd = kj[j] * d;
-        const Complex norm = 0.5 * d + std::sinh(2.0 * kd) / (4.0 * kj[j]);
-        cj[j] = omega * omega * std::sinh(kd) * std::cosh(kd) / (g * kj[j] * kj[j] * norm);
-    }
-    const double K2 = bigK * bigK;
-    Complex s1 = 0.0, s3 = 0.0;
-    for (std::size_t j = 0; j < kj.size(); ++j) {
-        s1 += cj[j] * kj[j] * kj[j] / (kj[j] * kj[j] - K2);
-        for (std::size_t l = 0; l < kj.size(); ++l) {
-            const Complex sum = kj[j] + kj[l];
-            // Schäffer eq. 25d with n = m.
-            const Complex h = 3.0 * omega * omega * omega -
-                              (g * g / omega) * (2.0 * kj[j] * kj[l] + 0.5 * (kj[j] * kj[j] + kj[l] * kj[l]));
-            s3 += cj[j] * cj[l] * sum * h / (sum * sum - K2);
-        }
-    }
-    const double c0 = cj[0].real();  // H/S
-    return a * a * K2 * (3.0 * g * omega * s1 + s3) / (16.0 * omega * omega * omega * c0 * c0);
-}
-
-
 /// A first-order component's modes for the pair sums, at a signed frequency ω (ω < 0: the
 /// conjugate of the component at −ω). The progressive mode k₀ (sign of ω) with its c₀; the
 /// evanescent k_j = −iκ_j, whose c_j = i·ĉ_j is imaginary, kept as reals (the same for ±ω).
@@ -158,9 +128,9 @@ Complex pistonSecondOrderStroke(double waveHeight, double omega, double depth, d
         throw std::invalid_argument("pistonSecondOrderStroke: H, ω, depth, g and modes must be > 0, got " +
                                     std::to_string(waveHeight) + ", " + std::to_string(omega) + ", " +
                                     std::to_string(depth) + ", " + std::to_string(g) + ", " + std::to_string(modes));
-    const double a = 0.5 * waveHeight;
-    // The evanescent sums' error falls as 1/N: C(∞) ≈ 2 C(2N) − C(N).
-    return 2.0 * strokeWithModes(a, omega, depth, g, 2 * modes) - strokeWithModes(a, omega, depth, g, modes);
+    // A component with itself: half the superharmonic of a pair at the same ω (δ = ½).
+    const double stroke = 0.5 * waveHeight / pistonHeightToStroke(waveNumber(omega, depth, g) * depth);
+    return 0.5 * pistonSecondOrderPair(stroke, omega, stroke, omega, depth, g, modes).sum;
 }
 
 double freeSecondHarmonic(Complex stroke, double omega, double depth, double g) {

@@ -32,11 +32,12 @@ namespace tide::waves {
 ///
 /// c₀ = H/S the linear transfer function. This is Schäffer's eq. 41a–b for a piston
 /// (X₂ = Re[−i (a²/d) F⁺ e^{2iωt}], δ = ½); S₁ is the paddle's displacement term (X₁ φ₁,xx at
-/// the paddle), S₃ the free surface's forcing. The sums converge as 1/N in the number of
-/// evanescent modes: `modes` and 2·`modes` are extrapolated (Richardson), 2e-5 relative at 400.
+/// the paddle), S₃ the free surface's forcing: the n = m case of pistonSecondOrderPair (half its
+/// superharmonic), which computes it. The sums converge as 1/N in the number of evanescent
+/// modes: `modes` and 2·`modes` are extrapolated (Richardson), 1e-5 relative from 100.
 /// Throws std::invalid_argument for ω, d, H, g or modes ≤ 0.
 std::complex<double> pistonSecondOrderStroke(double waveHeight, double omega, double depth, double g,
-                                             int modes = 400);
+                                             int modes = 50);
 
 /// The elevation amplitude a piston's stroke harmonic X sin(2ωt + φ) radiates as a free wave at
 /// 2ω (linear theory, c₀ at K d), m: what pistonSecondOrderStroke's C, added to the stroke,

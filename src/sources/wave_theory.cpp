@@ -71,6 +71,18 @@ double JonswapSpectrum::shape(double f) const {
 
 double JonswapSpectrum::operator()(double f) const { return scale_ * shape(f); }
 
+namespace {
+/// `first` with, for a piston of order 2, Schäffer 1996's second-order components: every pair's
+/// super- and subharmonic, merged by frequency (3N − 2 of them; for regular waves the one
+/// harmonic at 2ω, Re C sin 2ωt + Im C cos 2ωt).
+std::vector<PaddleComponent> withSecondOrder(const WaveMakerDef& def, std::vector<PaddleComponent> first, double g) {
+    if (def.order != 2 || def.type != WaveMakerDef::Type::Piston) return first;
+    const std::vector<PaddleComponent> second = pistonSecondOrderComponents(first, def.depth, g);
+    first.insert(first.end(), second.begin(), second.end());
+    return first;
+}
+}  // namespace
+
 std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g) {
     const double d = def.depth;
     std::vector<PaddleComponent> out;
@@ -82,16 +94,7 @@ std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g)
         const double kd = waveNumber(c.omega, d, g) * d;
         c.amplitude = c.waveAmplitude / transfer(def.type, kd);
         out.push_back(c);
-        if (def.order == 2 && def.type == WaveMakerDef::Type::Piston) {
-            // Schäffer 1996: the stroke's second harmonic, Re C sin 2ωt + Im C cos 2ωt.
-            const std::complex<double> stroke = pistonSecondOrderStroke(def.waveHeight, c.omega, d, g);
-            PaddleComponent second;
-            second.omega = 2.0 * c.omega;
-            second.amplitude = std::abs(stroke);
-            second.phase = std::arg(stroke);
-            out.push_back(second);
-        }
-        return out;
+        return withSecondOrder(def, std::move(out), g);
     }
     const WaveSpectrumDef& s = def.spectrum;
     const double gamma = s.type == WaveSpectrumDef::Type::PiersonMoskowitz ? 1.0 : s.gamma;
@@ -111,12 +114,7 @@ std::vector<PaddleComponent> paddleComponents(const WaveMakerDef& def, double g)
         c.phase = 2.0 * std::numbers::pi * (static_cast<double>(random()) / 4294967296.0);
         out.push_back(c);
     }
-    if (def.order == 2 && def.type == WaveMakerDef::Type::Piston) {
-        // Schäffer 1996: every pair's super- and subharmonic, merged by frequency (3N − 2 of them).
-        const std::vector<PaddleComponent> second = pistonSecondOrderComponents(out, d, g);
-        out.insert(out.end(), second.begin(), second.end());
-    }
-    return out;
+    return withSecondOrder(def, std::move(out), g);
 }
 
 SolitaryStroke::SolitaryStroke(double waveHeight, double depth, double g)
