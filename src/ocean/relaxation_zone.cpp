@@ -102,9 +102,8 @@ double RelaxationZones::rate(const glm::vec3& x) const { return rateAt(distanceT
 double RelaxationZones::rateAt(double s) const {
     if (!(s < width_)) return 0.0;
     const double chi = std::clamp(1.0 - s / width_, 0.0, 1.0);
-    // 1 − α_R(χ) of Jacobsen et al. 2012, eq. 11: 0 at the inner edge, 1 at the outer
-    // (χ^3.5 as χ³ √χ).
-    const double weight = std::expm1(chi * chi * chi * std::sqrt(chi)) / (std::numbers::e - 1.0);
+    // 1 − α_R(χ) of Jacobsen et al. 2012, eq. 11: 0 at the inner edge, 1 at the outer.
+    const double weight = std::expm1(std::pow(chi, kRelaxationExponent)) / (std::numbers::e - 1.0);
     return weight / tau0_;
 }
 
@@ -207,7 +206,6 @@ std::uint32_t RelaxationZones::removeOutflow(ParticleStore& particles) {
             ++removed;
         }
     if (removed > 0) particles.retain(keep_);
-    totals_.removed += removed;
     return removed;
 }
 
@@ -337,7 +335,6 @@ std::uint32_t RelaxationZones::refill(ParticleStore& particles, double t, double
                     }
                     if (visits) visits->push_back(visit);
                     ++added;
-                    ++totals_.added;
                 }
             }
     }
