@@ -10,7 +10,8 @@
 /// Meth. Fluids 70, eq. 10–11: u ← α u_computed + (1 − α) u_target, α_R(χ) = 1 − (exp(χ^p)
 /// − 1)/(exp(1) − 1), p = 3.5 there, kRelaxationExponent here), used in SPH by Altomare et al.
 /// 2018 (DualSPHysics' relaxation zone, Coastal Engineering 138). Their blend acts once per
-/// step, so its strength depends on the step; here it is the exact solution of du/dt = −(u − u_far)/τ over the step,
+/// step, so its strength depends on the step; here it is the exact solution of
+/// du/dt = −(u − u_far)/τ over the step,
 ///   u ← u_far + (u − u_far) exp(−Δt/τ(x)),   1/τ(x) = (1 − α_R(χ)) / τ0,
 /// with χ = 1 − s/W (s the distance to the open face: χ = 1 at the outer edge, 0 at the inner)
 /// and τ0 = Tp/kRelaxationSteps: the same relaxation whatever the step. A particle in two
