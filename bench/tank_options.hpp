@@ -21,6 +21,8 @@ struct TankOptions {
     float spacing = 0.02f, supportRatio = WorldDef{}.supportRatio;
     float length = 0.68f, depth = 0.3f;
     float maxDensityError = SolverDef{}.maxDensityError, xsph = -1.0f, momentum = -1.0f, shifting = 0.0f, differenceForm = 0.0f;
+    float maxDivergenceError = SolverDef{}.maxDivergenceError;
+    int minIterations = SolverDef{}.minIterations;
     float maxDt = SolverDef{}.maxDt, cfl = SolverDef{}.cflNumber;
     int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows
     int maxIterations = SolverDef{}.maxIterations;
@@ -43,6 +45,9 @@ struct TankOptions {
         app.add_option("--depth", depth, "water depth, m")->capture_default_str()->check(CLI::PositiveNumber);
         app.add_option("--width", width, "periodic z cell in spacings (0: the narrowest the support allows, at least 4)");
         app.add_option("--max-density-error", maxDensityError, "solver.max_density_error")->capture_default_str();
+        app.add_option("--max-divergence-error", maxDivergenceError, "solver.max_divergence_error (negative: max_density_error)")
+            ->capture_default_str();
+        app.add_option("--min-iterations", minIterations, "solver.min_iterations")->capture_default_str()->check(CLI::NonNegativeNumber);
         app.add_option("--xsph", xsph, "solver.xsph (negative: the solver's default)")->capture_default_str();
         app.add_option("--momentum", momentum, "solver.momentum (negative: the solver's default)")->capture_default_str();
         app.add_option("--shifting", shifting, "solver.shifting (dfsph: Fickian particle shifting, 0 off)")
@@ -78,6 +83,8 @@ struct TankOptions {
         def.solver.shifting = shifting;
         def.solver.differenceForm = differenceForm;
         def.solver.maxIterations = maxIterations;
+        def.solver.maxDivergenceError = maxDivergenceError;
+        def.solver.minIterations = minIterations;
         def.solver.maxDt = maxDt;
         def.solver.cflNumber = cfl;
         return def;
