@@ -23,6 +23,8 @@ struct TankOptions {
     float maxDensityError = SolverDef{}.maxDensityError, xsph = -1.0f, momentum = -1.0f, shifting = 0.0f, differenceForm = 0.0f;
     float maxDivergenceError = SolverDef{}.maxDivergenceError;
     int minIterations = SolverDef{}.minIterations;
+    int minDivergenceIterations = SolverDef{}.minDivergenceIterations;
+    float divergenceWarmStart = SolverDef{}.divergenceWarmStart;
     float maxDt = SolverDef{}.maxDt, cfl = SolverDef{}.cflNumber;
     int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows
     int maxIterations = SolverDef{}.maxIterations;
@@ -48,6 +50,12 @@ struct TankOptions {
         app.add_option("--max-divergence-error", maxDivergenceError, "solver.max_divergence_error (negative: max_density_error)")
             ->capture_default_str();
         app.add_option("--min-iterations", minIterations, "solver.min_iterations")->capture_default_str()->check(CLI::NonNegativeNumber);
+        app.add_option("--min-divergence-iterations", minDivergenceIterations,
+                       "solver.min_divergence_iterations (negative: min_iterations)")
+            ->capture_default_str();
+        app.add_option("--divergence-warm-start", divergenceWarmStart, "solver.divergence_warm_start")
+            ->capture_default_str()
+            ->check(CLI::Range(0.0, 1.0));
         app.add_option("--xsph", xsph, "solver.xsph (negative: the solver's default)")->capture_default_str();
         app.add_option("--momentum", momentum, "solver.momentum (negative: the solver's default)")->capture_default_str();
         app.add_option("--shifting", shifting, "solver.shifting (dfsph: Fickian particle shifting, 0 off)")
@@ -85,6 +93,8 @@ struct TankOptions {
         def.solver.maxIterations = maxIterations;
         def.solver.maxDivergenceError = maxDivergenceError;
         def.solver.minIterations = minIterations;
+        def.solver.minDivergenceIterations = minDivergenceIterations;
+        def.solver.divergenceWarmStart = divergenceWarmStart;
         def.solver.maxDt = maxDt;
         def.solver.cflNumber = cfl;
         return def;
