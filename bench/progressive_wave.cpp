@@ -10,7 +10,8 @@
 // difference (docs/notes/waves.md § Where 2D progressive waves lose their height).
 //
 //   tide_progressive_wave [--length 2.3118] [--depth 0.7] [--amplitude 0.04] [--dimensions 2] ...
-// --length is half the wave length, as tide_standing_wave's --length.
+// --length is half the wave length, as tide_standing_wave's --length. The solver starts from the
+// wave settings a world with a wave maker gets in 2D (shifting 0.2, no XSPH).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -46,10 +47,13 @@ int main(int argc, char** argv) {
     tank.length = 2.3118f;  // half of issue 43's wave length (T 2 s, d 0.7 m)
     tank.depth = 0.7f;
     tank.dimensions = 2;
-    tank.shifting = 0.2f;  // what a wave maker's world takes by default
+    tank.shifting = 0.2f;  // the wave settings (sources/wave_numerics.hpp): shifting, no XSPH
+    tank.xsph = 0.0f;
     float amplitude = 0.04f;
-    double seconds = 12.0, series = 0.0;
+    double seconds = 12.0, series = 0.0, settle = 0.0;
     tank.addTo(app);
+    app.add_option("--settle", settle, "World::settle for this long first (pre-roll with the default XSPH, velocities zeroed), s")
+        ->capture_default_str()->check(CLI::NonNegativeNumber);
     app.add_option("--series", series, "print the amplitude and the mean level every this many s (0: not)")->check(CLI::NonNegativeNumber);
     app.add_option("--amplitude", amplitude, "wave amplitude a (H/2), m")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--seconds", seconds, "simulated time after the wave is made, s")->capture_default_str()->check(CLI::PositiveNumber);
@@ -57,7 +61,15 @@ int main(int argc, char** argv) {
 
     const float length = tank.length, depth = tank.depth;
     try {
-        tide::World world = tide::scenarios::standingModeTank(tank.worldDef(), length, depth, tank.widthInSpacings(), true);
+        const tide::WorldDef def = tank.worldDef();
+        tide::World world = tide::scenarios::standingModeTank(def, length, depth, tank.widthInSpacings(), true);
+        if (settle > 0.0) {  // as tide_standing_wave --settle
+            tide::WorldDef settling = def;
+            settling.solver.xsph = -1.0f;
+            tide::World settled = tide::scenarios::standingModeTank(settling, length, depth, tank.widthInSpacings(), true);
+            settled.settle(settle);
+            world.restoreState(settled.saveState());
+        }
         const double g = std::round(1e4 * std::abs(static_cast<double>(world.def().gravity.y))) * 1e-4;
         const double k = std::numbers::pi / length, omega = std::sqrt(g * k * std::tanh(k * depth));
         const double scale = amplitude * omega / std::sinh(k * depth);
