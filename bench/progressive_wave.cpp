@@ -16,6 +16,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -92,6 +94,7 @@ int main(int argc, char** argv) {
                 level += height - depth;
                 ++count;
             }
+            if (count == 0) throw std::runtime_error("no gauge found the surface at t = " + std::to_string(world.time()) + " s");
             levels.push_back(level / count);
             c *= 2.0 / count;
             s *= 2.0 / count;
@@ -142,11 +145,12 @@ int main(int argc, char** argv) {
         };
         std::printf("%s, spacing %.4f m, a = %.4f m, wave length %.4f m, d = %.3f m: omega %.4f rad/s against %.4f (%+.2f %%), "
                     "amplitude %.4f m at the start, decay %.4f 1/s (%.2f %% a wave length), mean current at the end %.2f mm/s, "
-                    "mean level %+.2f mm at the start, %+.2f mm over the last period; %llu steps\n",
+                    "mean level %+.2f mm at the start, %+.2f mm over the last period; %llu steps, %.1f pressure iterations a step\n",
                     tank.solver.c_str(), tank.spacing, amplitude, extent, depth, omegaFit, omega, 100.0 * (omegaFit / omega - 1.0),
                     std::exp(a0), decay, 100.0 * (1.0 - std::exp(-decay * period)), 1e3 * momentum / mass, 1e3 * levels.front(),
                     1e3 * meanOfLast(levels, static_cast<std::size_t>(std::lround(period / dt))),
-                    static_cast<unsigned long long>(world.stats().steps));
+                    static_cast<unsigned long long>(world.stats().steps),
+                    static_cast<double>(world.stats().pressureIterationsSum) / static_cast<double>(world.stats().steps));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "tide_progressive_wave: %s\n", e.what());
         return 1;
