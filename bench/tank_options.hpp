@@ -24,6 +24,7 @@ struct TankOptions {
     float maxDivergenceError = SolverDef{}.maxDivergenceError;
     int minIterations = SolverDef{}.minIterations;
     int minDivergenceIterations = SolverDef{}.minDivergenceIterations;
+    bool smoothDensityError = SolverDef{}.smoothDensityError;
     float divergenceWarmStart = SolverDef{}.divergenceWarmStart;
     float maxDt = SolverDef{}.maxDt, cfl = SolverDef{}.cflNumber;
     int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows
@@ -56,6 +57,7 @@ struct TankOptions {
         app.add_option("--divergence-warm-start", divergenceWarmStart, "solver.divergence_warm_start")
             ->capture_default_str()
             ->check(CLI::Range(0.0, 1.0));
+        app.add_flag("--smooth-density-error", smoothDensityError, "solver.smooth_density_error (dfsph)");
         app.add_option("--xsph", xsph, "solver.xsph (negative: the solver's default)")->capture_default_str();
         app.add_option("--momentum", momentum, "solver.momentum (negative: the solver's default)")->capture_default_str();
         app.add_option("--shifting", shifting, "solver.shifting (dfsph: Fickian particle shifting, 0 off)")
@@ -95,6 +97,7 @@ struct TankOptions {
         def.solver.minIterations = minIterations;
         def.solver.minDivergenceIterations = minDivergenceIterations;
         def.solver.divergenceWarmStart = divergenceWarmStart;
+        def.solver.smoothDensityError = smoothDensityError;
         def.solver.maxDt = maxDt;
         def.solver.cflNumber = cfl;
         return def;

@@ -77,6 +77,12 @@ TEST(SceneSolver, DivergenceWarmStartIsHalfUnlessTheSceneSetsIt) {
     EXPECT_EQ(parseWithSolver(R"({"divergence_warm_start": 0})").world.solver.divergenceWarmStart, 0.0f);
 }
 
+TEST(SceneSolver, SmoothDensityErrorIsOffUnlessTheSceneSetsIt) {
+    EXPECT_FALSE(parseWithSolver("{}").world.solver.smoothDensityError);
+    EXPECT_TRUE(parseWithSolver(R"({"smooth_density_error": true})").world.solver.smoothDensityError);
+    EXPECT_FALSE(parseWithSolver(R"({"smooth_density_error": false})").world.solver.smoothDensityError);
+}
+
 TEST(SceneSolver, DifferenceFormIsAutomaticUnlessTheSceneSetsIt) {
     EXPECT_LT(parseWithSolver("{}").world.solver.differenceForm, 0.0f);
     EXPECT_EQ(parseWithSolver(R"({"difference_form": 0})").world.solver.differenceForm, 0.0f);

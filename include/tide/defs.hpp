@@ -143,6 +143,16 @@ struct SolverDef {
     /// push taken out). 0 switches it off. Negative (the default): automatic, 0.5 in a world
     /// with a wave maker, else 0.
     float differenceForm = -1.0f;
+    /// dfsph: the density solve drives the kernel average of the compression left,
+    /// ē_i = Σ_j W_ij e_j / Σ_j W_ij (its own term included), to its target instead of each
+    /// particle's own e_i: a Shepard (1968) filter of the residual, the zeroth-order form of
+    /// the density filters of weakly compressible SPH (Colagrossi & Landrini 2003 use the
+    /// first-order, MLS one on the density itself). The particle-scale part of the compression a wave's strain
+    /// makes in the packing is then not projected out each step, and that projection is where
+    /// much of a wave's height went: a progressive wave at 8 mm (5 particles per H) lost 2.3 %
+    /// a wave length with it against 4.3 % (docs/notes/waves.md § Smoothing the density
+    /// solve's residual). Costs a kernel sum per iteration. Off by default.
+    bool smoothDensityError = false;
     /// Incompressible solvers (dfsph, pcisph) iterate until the mean compression
     /// (ρ − ρ0)/ρ0 is below this (0.001 = 0.1 %).
     float maxDensityError = 0.001f;

@@ -42,6 +42,8 @@ void validateWorldDef(const WorldDef& d) {
     if (s.differenceForm > 0.0f && s.method != "dfsph")
         throw std::invalid_argument("solver.differenceForm: only the dfsph solver takes it, got " + show(s.differenceForm) +
                                     " with solver \"" + s.method + "\"");
+    if (s.smoothDensityError && s.method != "dfsph")
+        throw std::invalid_argument("solver.smoothDensityError: only the dfsph solver takes it, got solver \"" + s.method + "\"");
     requireInRange("solver.maxDensityError", s.maxDensityError, 1e-6f, 0.5f);
     if (s.maxDivergenceError >= 0.0f) requireInRange("solver.maxDivergenceError", s.maxDivergenceError, 1e-6f, 0.5f);
     if (s.minDivergenceIterations < -1)

@@ -6,7 +6,7 @@ namespace tide::io::scene_reading {
 void readSolver(Reader& r, const json& j, Scene& scene) {
     const std::string path = "solver";
     if (!r.object(j, path, {"method", "kernel", "equation_of_state", "sound_speed", "cfl", "min_dt", "max_dt", "viscosity",
-                            "xsph", "momentum", "shifting", "difference_form", "clamp_negative_pressure", "support_ratio", "max_density_error",
+                            "xsph", "momentum", "shifting", "difference_form", "smooth_density_error", "clamp_negative_pressure", "support_ratio", "max_density_error",
                             "max_divergence_error", "min_iterations", "min_divergence_iterations", "divergence_warm_start",
                             "max_iterations", "constraint_iterations", "vorticity"}))
         return;
@@ -61,6 +61,11 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
             r.fail(join(path, "difference_form"), "only the dfsph solver takes it, got solver \"" + s.method + "\"");
     }
     if (auto v = r.boolean(j, "clamp_negative_pressure", path)) s.clampNegativePressure = *v;
+    if (auto v = r.boolean(j, "smooth_density_error", path)) {
+        s.smoothDensityError = *v;
+        if (s.smoothDensityError && s.method != "dfsph")
+            r.fail(join(path, "smooth_density_error"), "only the dfsph solver takes it, got solver \"" + s.method + "\"");
+    }
     if (auto v = r.number(j, "max_density_error", path, false, 0.0, 0.5, true)) s.maxDensityError = static_cast<float>(*v);
     if (auto v = r.number(j, "max_divergence_error", path, false, 0.0, 0.5, true))
         s.maxDivergenceError = static_cast<float>(*v);

@@ -71,6 +71,8 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     wallF_.resize(ctx.boundaryNeighbors, w);
     alpha_.resize(n);
     fluidGradient_.resize(n);
+    const bool smooth = ctx.solver.smoothDensityError;
+    if (smooth) fluidKernelSum_.resize(n);
     const float self = w.value(0.0f);
     withPairVector(ctx.periodic, [&](auto delta) {
         parallelFor(n, ctx.threads, [&](std::uint32_t i) {
@@ -94,6 +96,7 @@ void DfsphBender2017::prepare(StepContext& ctx) {
                 volume += ctx.boundary.volume * w.value(r);
                 *f++ = wallF_.encode(w, r);
             }
+            if (smooth) fluidKernelSum_[i] = uniform ? rho / positionMass_[i].w : rho;
             if (!uniform) rho *= p.mass[i];  // ρ_i = m_i δ_i
             p.density[i] = rho + ctx.materials[p.material[i]].restDensity * volume;
         });
@@ -392,6 +395,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
                 });
             });
         }
+        if (ctx.solver.smoothDensityError) smoothDensityError(ctx);
         const double error = meanRelativeError(ctx, Solve::Density);
         converged = error <= target;
         if (converged && iteration >= ctx.solver.minIterations) break;
@@ -428,6 +432,26 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     }
     densityConverged_ = converged;
     return iteration;
+}
+
+// A Shepard (1968) filter of the residual: the solve then corrects the compression's smooth
+// part and leaves the particle-scale part a wave's strain makes in the packing to shifting
+// (SolverDef::smoothDensityError; docs/notes/waves.md § Smoothing the density solve's residual).
+void DfsphBender2017::smoothDensityError(StepContext& ctx) {
+    const ParticleStore& p = ctx.particles;
+    const auto n = p.size();
+    const kernels::SmoothingKernel w = ctx.kernel();
+    const float self = w.value(0.0f);
+    ctx.refreshGhosts(error_);  // a ghost's error misses neighbours
+    smoothedError_.resize(n);
+    // (x_j, e_j) rows at the step's positions, where fluidKernelSum_ was summed.
+    parallelFor(n, ctx.threads, [&](std::uint32_t j) { positionK_[j] = glm::vec4(p.position[j], error_[j]); });
+    parallelFor(n, ctx.threads, [&](std::uint32_t i) {
+        const float sum = pair_sums::kernelSum(fluidPairs(ctx, i), positionK_.data(), p.position[i], w, ctx.periodic,
+                                               error_[i] * self);
+        smoothedError_[i] = sum / fluidKernelSum_[i];
+    });
+    error_.swap(smoothedError_);
 }
 
 void DfsphBender2017::smoothKappa(StepContext& ctx) {

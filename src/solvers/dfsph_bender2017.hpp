@@ -95,6 +95,10 @@ private:
     /// κ̄_i = Σ_j m_j W_ij κ_j / Σ_j m_j W_ij over i and its fluid neighbours
     /// (SolverDef::differenceForm), into error_.
     void smoothKappa(StepContext& ctx);
+    /// error_ ← its kernel average Σ_j W_ij e_j / Σ_j W_ij over i and its fluid neighbours
+    /// (SolverDef::smoothDensityError); uses positionK_, free between an iteration's error
+    /// and its push.
+    void smoothDensityError(StepContext& ctx);
 
     std::vector<float> alpha_;
     /// The divergence solve's max(Dρ/Dt, 0), or the density solve's ρ* − ρ0, signed (one
@@ -102,6 +106,8 @@ private:
     std::vector<float> error_;
     std::vector<float> k_;             ///< κ·Δt (divergence) or κ·Δt² (density) of one iteration
     std::vector<float> kappa_;         ///< κ of the density solve so far, m²/s²
+    std::vector<float> fluidKernelSum_;  ///< Σ_j W_ij over i and its fluid neighbours (SolverDef::smoothDensityError)
+    std::vector<float> smoothedError_;   ///< smoothDensityError's output, swapped into error_
     std::vector<float> boundaryK_;     ///< k of the walls for one iteration (like k_)
     std::vector<float> loadK_;         ///< Σ k_ over a solve's pushes (with loads only)
     std::vector<float> loadBoundaryK_; ///< Σ boundaryK_ over the density solve's pushes (with loads only)
