@@ -148,6 +148,7 @@ int main(int argc, char** argv) {
                    "solver.difference_form (share of the smoothed pressure's self-term in the difference form, 0 off)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1.0));
+    app.add_flag("--smooth-density-error", solver.smoothDensityError, "solver.smooth_density_error (dfsph)");
     app.add_option("--max-dt", solver.maxDt, "solver.max_dt, s")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--max-density-error", solver.maxDensityError, "solver.max_density_error")
         ->capture_default_str()->check(CLI::PositiveNumber);

@@ -147,11 +147,12 @@ struct SolverDef {
     /// ē_i = Σ_j W_ij e_j / Σ_j W_ij (its own term included), to its target instead of each
     /// particle's own e_i: a Shepard (1968) filter of the residual, the zeroth-order form of
     /// the density filters of weakly compressible SPH (Colagrossi & Landrini 2003 use the
-    /// first-order, MLS one on the density itself). The particle-scale part of the compression a wave's strain
-    /// makes in the packing is then not projected out each step, and that projection is where
-    /// much of a wave's height went: a progressive wave at 8 mm (5 particles per H) lost 2.3 %
-    /// a wave length with it against 4.3 % (docs/notes/waves.md § Smoothing the density
-    /// solve's residual). Costs a kernel sum per iteration. Off by default.
+    /// first-order, MLS one on the density itself). The particle-scale part of the
+    /// compression a wave's strain makes in the packing is then not projected out each step,
+    /// and that projection is where much of a wave's height went: a 2D progressive wave at
+    /// 8 mm (5 particles per H) lost 2.3 % a wave length with it against 4.3 %, at the price
+    /// of busier still water (docs/notes/waves.md § Smoothing the density solve's residual).
+    /// Costs a kernel sum per iteration (+16 % a step there). Off by default.
     bool smoothDensityError = false;
     /// Incompressible solvers (dfsph, pcisph) iterate until the mean compression
     /// (ρ − ρ0)/ρ0 is below this (0.001 = 0.1 %).
