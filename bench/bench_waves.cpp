@@ -61,10 +61,10 @@ int runFlume(float spacing, double seconds, int threads, int reach, const std::s
     std::printf("%dD flume %.2f m, %u particles, spacing %.4f m (%.1f per wave height), lambda %.3f m, %.1f s\n", dimensions, length,
                 world.particles().size(), spacing, H / spacing, lambda, seconds);
     std::printf("%s, viscosity %s, mu %g Pa s, xsph %g, momentum %g, shifting %g, difference form %g, max_dt %g s, max_density_error %g, "
-                "max_iterations %d, support ratio %g\n",
+                "max_iterations %d, support ratio %g, smooth density error %s\n",
                 used.method.c_str(), used.viscosity.empty() ? "(solver's own)" : used.viscosity.c_str(), water.viscosity, used.xsph,
                 used.momentum, used.shifting, used.differenceForm, used.maxDt, used.maxDensityError, used.maxIterations,
-                world.def().supportRatio);
+                world.def().supportRatio, used.smoothDensityError.value_or(false) ? "on" : "off");
     std::fflush(stdout);
     const auto start = std::chrono::steady_clock::now();
     const float z = 0.5f * world.def().domainMax.z;
@@ -148,7 +148,9 @@ int main(int argc, char** argv) {
                    "solver.difference_form (share of the smoothed pressure's self-term in the difference form, 0 off)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1.0));
-    app.add_flag("--smooth-density-error", solver.smoothDensityError, "solver.smooth_density_error (dfsph)");
+    bool smoothDensityError = true;
+    app.add_flag("--smooth-density-error,!--no-smooth-density-error", smoothDensityError,
+                 "solver.smooth_density_error (dfsph; default: the wave settings', on in 2D)");
     app.add_option("--max-dt", solver.maxDt, "solver.max_dt, s")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--max-density-error", solver.maxDensityError, "solver.max_density_error")
         ->capture_default_str()->check(CLI::PositiveNumber);
@@ -167,6 +169,8 @@ int main(int argc, char** argv) {
         }
         if (!app.count("--difference-form")) solver.differenceForm = -1.0f;  // the 2D wave default (off)
     }
+    if (app.count("--smooth-density-error") || app.count("--no-smooth-density-error"))
+        solver.smoothDensityError = smoothDensityError;
     supportRatio = tide::scenarios::resolvedSupportRatio(solver, supportRatio);
     try {
         return runFlume(spacing, seconds, threads, reach, csv, solver, water, supportRatio, dimensions);

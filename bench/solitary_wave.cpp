@@ -31,7 +31,12 @@ int main(int argc, char** argv) {
     app.add_option("--shifting", solver.shifting, "solver.shifting (negative: the wave default)")->capture_default_str();
     app.add_option("--difference-form", solver.differenceForm, "solver.difference_form (negative: the wave default)")
         ->capture_default_str();
+    bool smoothDensityError = false;
+    app.add_flag("--smooth-density-error,!--no-smooth-density-error", smoothDensityError,
+                 "solver.smooth_density_error (default: the wave settings', on in 2D)");
     CLI11_PARSE(app, argc, argv);
+    if (app.count("--smooth-density-error") || app.count("--no-smooth-density-error"))
+        solver.smoothDensityError = smoothDensityError;
     tide::WaveMakerDef paddle;
     paddle.type = tide::WaveMakerDef::Type::Solitary;
     paddle.x = 0.1f;

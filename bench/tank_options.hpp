@@ -24,7 +24,7 @@ struct TankOptions {
     float maxDivergenceError = SolverDef{}.maxDivergenceError;
     int minIterations = SolverDef{}.minIterations;
     int minDivergenceIterations = SolverDef{}.minDivergenceIterations;
-    bool smoothDensityError = SolverDef{}.smoothDensityError;
+    bool smoothDensityError = false;  ///< a tank has no wave maker: off, as the solver's default
     float divergenceWarmStart = SolverDef{}.divergenceWarmStart;
     float maxDt = SolverDef{}.maxDt, cfl = SolverDef{}.cflNumber;
     int width = 0;  ///< periodic z cell in spacings; 0: the narrowest the support allows

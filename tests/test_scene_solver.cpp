@@ -78,9 +78,9 @@ TEST(SceneSolver, DivergenceWarmStartIsHalfUnlessTheSceneSetsIt) {
 }
 
 TEST(SceneSolver, SmoothDensityErrorIsOffUnlessTheSceneSetsIt) {
-    EXPECT_FALSE(parseWithSolver("{}").world.solver.smoothDensityError);
-    EXPECT_TRUE(parseWithSolver(R"({"smooth_density_error": true})").world.solver.smoothDensityError);
-    EXPECT_FALSE(parseWithSolver(R"({"smooth_density_error": false})").world.solver.smoothDensityError);
+    EXPECT_FALSE(parseWithSolver("{}").world.solver.smoothDensityError.has_value());  // automatic
+    EXPECT_EQ(parseWithSolver(R"({"smooth_density_error": true})").world.solver.smoothDensityError, std::optional<bool>(true));
+    EXPECT_EQ(parseWithSolver(R"({"smooth_density_error": false})").world.solver.smoothDensityError, std::optional<bool>(false));
 }
 
 TEST(SceneSolver, DifferenceFormIsAutomaticUnlessTheSceneSetsIt) {

@@ -119,24 +119,33 @@ TEST(WaveNumerics, AWorldWithAWaveMakerGetsTheWaveSettingsUnlessItSetsItsOwn) {
     still.particleSpacing = 0.05f;
     EXPECT_LT(World(still).def().solver.shifting, 0.0f);
     EXPECT_LT(World(still).def().solver.differenceForm, 0.0f);
+    EXPECT_FALSE(World(still).def().solver.smoothDensityError.value_or(false));
     World flume = scenarios::waveFlume(0.03f, 1.5f, 0.2f, paddle, 0.4f, 1);
     const SolverDef& s = flume.def().solver;
     EXPECT_EQ(s.shifting, 0.2f);
     EXPECT_EQ(s.differenceForm, 0.5f);
     EXPECT_EQ(s.xsph, 0.0f);
+    EXPECT_EQ(s.smoothDensityError, std::optional<bool>(false)) << "the filtered residual is for 2D waves";
     EXPECT_LT(s.momentum, 0.0f) << "the density solve keeps its heavy ball";
     // In 2D the difference form stays off (it diverged in a deep 2D flume).
     const SolverDef planar = scenarios::planarFlume(0.03f, 1.5f, paddle, 0.4f, 1).def().solver;
     EXPECT_EQ(planar.shifting, 0.2f);
     EXPECT_EQ(planar.differenceForm, 0.0f);
+    EXPECT_EQ(planar.smoothDensityError, std::optional<bool>(true));
+    // A solitary wave keeps no more height with the filtered residual (wave_numerics.hpp).
+    WaveMakerDef solitary = paddle;
+    solitary.type = WaveMakerDef::Type::Solitary;
+    EXPECT_EQ(scenarios::planarFlume(0.03f, 1.5f, solitary, 0.4f, 1).def().solver.smoothDensityError, std::optional<bool>(false));
     // What a scene sets stays.
     SolverDef own;
     own.shifting = 0.0f;
     own.xsph = 0.01f;
+    own.smoothDensityError = false;
     World mine = scenarios::waveFlume(0.03f, 1.5f, 0.2f, paddle, 0.4f, 1, 4, own);
     EXPECT_EQ(mine.def().solver.shifting, 0.0f);
     EXPECT_EQ(mine.def().solver.xsph, 0.01f);
     EXPECT_EQ(mine.def().solver.differenceForm, 0.5f);
+    EXPECT_EQ(mine.def().solver.smoothDensityError, std::optional<bool>(false));
 }
 
 }  // namespace

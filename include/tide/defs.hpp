@@ -152,8 +152,9 @@ struct SolverDef {
     /// and that projection is where much of a wave's height went: a 2D progressive wave at
     /// 8 mm (5 particles per H) lost 2.3 % a wave length with it against 4.3 %, at the price
     /// of busier still water (docs/notes/waves.md § Smoothing the density solve's residual).
-    /// Costs a kernel sum per iteration (+16 % a step there). Off by default.
-    bool smoothDensityError = false;
+    /// Costs a kernel sum per iteration (+16 % a step there). Unset (the default): automatic,
+    /// on in a 2D world with a wave maker or an ocean (sources/wave_numerics.hpp), else off.
+    std::optional<bool> smoothDensityError;
     /// Incompressible solvers (dfsph, pcisph) iterate until the mean compression
     /// (ρ − ρ0)/ρ0 is below this (0.001 = 0.1 %).
     float maxDensityError = 0.001f;

@@ -42,7 +42,7 @@ void validateWorldDef(const WorldDef& d) {
     if (s.differenceForm > 0.0f && s.method != "dfsph")
         throw std::invalid_argument("solver.differenceForm: only the dfsph solver takes it, got " + show(s.differenceForm) +
                                     " with solver \"" + s.method + "\"");
-    if (s.smoothDensityError && s.method != "dfsph")
+    if (s.smoothDensityError.value_or(false) && s.method != "dfsph")
         throw std::invalid_argument("solver.smoothDensityError: only the dfsph solver takes it, got solver \"" + s.method + "\"");
     requireInRange("solver.maxDensityError", s.maxDensityError, 1e-6f, 0.5f);
     if (s.maxDivergenceError >= 0.0f) requireInRange("solver.maxDivergenceError", s.maxDivergenceError, 1e-6f, 0.5f);
@@ -393,7 +393,7 @@ void World::addWaveMaker(const WaveMakerDef& def) {
     checkRoomAboveWaves(def, static_cast<double>(d.domainMax.y - d.domainMin.y) - def.depth);
     WaveMaker maker(def, d.domainMin.y, g);
     // A wave tank's numerics unless the scene chose its own (docs/waves.md § Defaults).
-    applyWaveNumerics(w.def.solver, w.def.dimensions);
+    applyWaveNumerics(w.def.solver, w.def.dimensions, def.type != WaveMakerDef::Type::Solitary);
     if (w.paddles.empty()) {
         // The fluid's lattice starts at the first paddle's face in x; the walls move onto it
         // while nothing else is there (wave makers come before obstacles and blocks).
@@ -470,7 +470,7 @@ void World::setOcean(const OceanDef& ocean, MaterialIndex material) {
     w.openFaces = faces;
     // Its waves get a wave tank's numerics unless the scene chose its own (issue 42: "a scene
     // with a wave maker (or an ocean zone)"; docs/waves.md § Defaults).
-    applyWaveNumerics(w.def.solver, w.def.dimensions);
+    applyWaveNumerics(w.def.solver, w.def.dimensions, true);
     if (w.def.walls) w.sampleWalls();
 }
 

@@ -63,7 +63,7 @@ void readSolver(Reader& r, const json& j, Scene& scene) {
     if (auto v = r.boolean(j, "clamp_negative_pressure", path)) s.clampNegativePressure = *v;
     if (auto v = r.boolean(j, "smooth_density_error", path)) {
         s.smoothDensityError = *v;
-        if (s.smoothDensityError && s.method != "dfsph")
+        if (*v && s.method != "dfsph")
             r.fail(join(path, "smooth_density_error"), "only the dfsph solver takes it, got solver \"" + s.method + "\"");
     }
     if (auto v = r.number(j, "max_density_error", path, false, 0.0, 0.5, true)) s.maxDensityError = static_cast<float>(*v);

@@ -71,7 +71,7 @@ void DfsphBender2017::prepare(StepContext& ctx) {
     wallF_.resize(ctx.boundaryNeighbors, w);
     alpha_.resize(n);
     fluidGradient_.resize(n);
-    const bool smooth = ctx.solver.smoothDensityError;
+    const bool smooth = ctx.solver.smoothDensityError.value_or(false);
     if (smooth) fluidKernelSum_.resize(n);
     const float self = w.value(0.0f);
     withPairVector(ctx.periodic, [&](auto delta) {
@@ -374,6 +374,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
     densityDiverged_ = false;
     double initialError = 0.0;
     bool linearised = false;  // ρ*_i = ρ_i + Δt Dρ_i/Dt instead of the density at x + Δt v
+    const bool smoothResidual = ctx.solver.smoothDensityError.value_or(false);
     for (; iteration < ctx.solver.maxIterations; ++iteration) {
         if (linearised) {
             // positionK_ holds the (v_j, 1/ρ_j) rows densityRate reads until push() packs the next κ change.
@@ -395,7 +396,7 @@ int DfsphBender2017::solveDensity(StepContext& ctx, float dt, float driftTime) {
                 });
             });
         }
-        if (ctx.solver.smoothDensityError) smoothDensityError(ctx);
+        if (smoothResidual) smoothDensityError(ctx);
         const double error = meanRelativeError(ctx, Solve::Density);
         converged = error <= target;
         if (converged && iteration >= ctx.solver.minIterations) break;
