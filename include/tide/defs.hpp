@@ -153,7 +153,8 @@ struct SolverDef {
     /// 8 mm (5 particles per H) lost 2.3 % a wave length with it against 4.3 %, at the price
     /// of busier still water (docs/notes/waves.md § Smoothing the density solve's residual).
     /// Costs a kernel sum per iteration (+16 % a step there). Unset (the default): automatic,
-    /// on in a 2D world with a wave maker or an ocean (sources/wave_numerics.hpp), else off.
+    /// on in a 2D world with regular or irregular waves or an ocean (sources/wave_numerics.hpp),
+    /// else off.
     std::optional<bool> smoothDensityError;
     /// Incompressible solvers (dfsph, pcisph) iterate until the mean compression
     /// (ρ − ρ0)/ρ0 is below this (0.001 = 0.1 %).
