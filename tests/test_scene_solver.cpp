@@ -77,7 +77,7 @@ TEST(SceneSolver, DivergenceWarmStartIsHalfUnlessTheSceneSetsIt) {
     EXPECT_EQ(parseWithSolver(R"({"divergence_warm_start": 0})").world.solver.divergenceWarmStart, 0.0f);
 }
 
-TEST(SceneSolver, SmoothDensityErrorIsOffUnlessTheSceneSetsIt) {
+TEST(SceneSolver, SmoothDensityErrorIsAutomaticUnlessTheSceneSetsIt) {
     EXPECT_FALSE(parseWithSolver("{}").world.solver.smoothDensityError.has_value());  // automatic
     EXPECT_EQ(parseWithSolver(R"({"smooth_density_error": true})").world.solver.smoothDensityError, std::optional<bool>(true));
     EXPECT_EQ(parseWithSolver(R"({"smooth_density_error": false})").world.solver.smoothDensityError, std::optional<bool>(false));
