@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -156,6 +157,11 @@ int main(int argc, char** argv) {
         ->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--max-iterations", solver.maxIterations, "solver.max_iterations (the density solve's cap)")
         ->capture_default_str()->check(CLI::Range(1, 100000));
+    app.add_option("--kernel", solver.kernel, "solver.kernel")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, tide::KernelShape>{{"cubic_spline", tide::KernelShape::CubicSpline},
+                                                                                     {"wendland_c2", tide::KernelShape::WendlandC2},
+                                                                                     {"automatic", tide::KernelShape::Automatic}}))
+        ->default_str("automatic (Wendland C2 in 2D, cubic spline in 3D)");
     app.add_option("--support-ratio", supportRatio, "kernel support / spacing (default: the kernel's own)")->check(CLI::Range(1.0, 4.0));
     int dimensions = 3;
     app.add_option("--dimensions", dimensions, "2: the planar flume (the 2D wave defaults: difference form off unless given); 3: the slab")
