@@ -2,7 +2,8 @@
 # Regular waves at a row of gauges (issue 42, acceptance 1), from the gauges.csv `tide run`
 # writes: per gauge, the mean zero-up-crossing height and period over a time window, and
 # the wave length from the phase of the first harmonic along the row (the slope of the
-# unwrapped phase against x is -k), against Airy's (omega^2 = g k tanh kd).
+# unwrapped phase against x is -k, so neighbouring gauges must stand closer than half a wave
+# length), against Airy's (omega^2 = g k tanh kd). The mean level is against DEPTH.
 #   bench/gauge_waves.py GAUGES_CSV SCENE_JSON PERIOD HEIGHT DEPTH T_FROM T_TO
 # e.g. tide run scenes/issue42_flume_2d.json --out out/f, then
 #      bench/gauge_waves.py out/f/gauges.csv scenes/issue42_flume_2d.json 1.2 0.03 0.25 4 8
@@ -19,7 +20,10 @@ with open(sys.argv[1]) as f:
 d = np.loadtxt(sys.argv[1], delimiter=',', skiprows=1)
 scene = json.load(open(sys.argv[2]))
 T, H, depth, t0, t1 = (float(v) for v in sys.argv[3:8])
-xs = {g['name']: float(g['x']) for g in scene['gauges']}
+xs = {g['name']: float(g['x']) for g in scene.get('gauges', [])}
+missing = [name for name in names[1:] if name not in xs]
+if missing:
+    sys.exit(f"gauge_waves.py: {sys.argv[2]} has no gauge named {missing[0]!r} (the CSV's columns: {names[1:]})")
 g = 9.81
 omega = 2 * math.pi / T
 k = omega * omega / g
