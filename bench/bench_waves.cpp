@@ -17,7 +17,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <map>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -29,6 +28,7 @@
 #include "sources/wave_theory.hpp"
 #include "testing/scenarios.hpp"
 #include "testing/wave_analysis.hpp"
+#include "tank_options.hpp"
 
 namespace {
 
@@ -149,19 +149,13 @@ int main(int argc, char** argv) {
                    "solver.difference_form (share of the smoothed pressure's self-term in the difference form, 0 off)")
         ->capture_default_str()
         ->check(CLI::Range(0.0, 1.0));
-    bool smoothDensityError = true;
-    app.add_flag("--smooth-density-error,!--no-smooth-density-error", smoothDensityError,
-                 "solver.smooth_density_error (dfsph; default: the wave settings', on in 2D)");
+    tide::bench::addSmoothDensityErrorFlags(app, solver);
     app.add_option("--max-dt", solver.maxDt, "solver.max_dt, s")->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--max-density-error", solver.maxDensityError, "solver.max_density_error")
         ->capture_default_str()->check(CLI::PositiveNumber);
     app.add_option("--max-iterations", solver.maxIterations, "solver.max_iterations (the density solve's cap)")
         ->capture_default_str()->check(CLI::Range(1, 100000));
-    app.add_option("--kernel", solver.kernel, "solver.kernel")
-        ->transform(CLI::CheckedTransformer(std::map<std::string, tide::KernelShape>{{"cubic_spline", tide::KernelShape::CubicSpline},
-                                                                                     {"wendland_c2", tide::KernelShape::WendlandC2},
-                                                                                     {"automatic", tide::KernelShape::Automatic}}))
-        ->default_str("automatic (Wendland C2 in 2D, cubic spline in 3D)");
+    tide::bench::addKernelOption(app, solver.kernel);
     app.add_option("--support-ratio", supportRatio, "kernel support / spacing (default: the kernel's own)")->check(CLI::Range(1.0, 4.0));
     int dimensions = 3;
     app.add_option("--dimensions", dimensions, "2: the planar flume (the 2D wave defaults: difference form off unless given); 3: the slab")
@@ -175,8 +169,6 @@ int main(int argc, char** argv) {
         }
         if (!app.count("--difference-form")) solver.differenceForm = -1.0f;  // the 2D wave default (off)
     }
-    if (app.count("--smooth-density-error") || app.count("--no-smooth-density-error"))
-        solver.smoothDensityError = smoothDensityError;
     supportRatio = tide::scenarios::resolvedSupportRatio(solver, supportRatio);
     try {
         return runFlume(spacing, seconds, threads, reach, csv, solver, water, supportRatio, dimensions);

@@ -15,6 +15,7 @@
 
 #include "testing/scenarios.hpp"
 #include "testing/wave_analysis.hpp"
+#include "tank_options.hpp"
 
 int main(int argc, char** argv) {
     CLI::App app{"A solitary wave (Goring 1978) along a flume: crest height and celerity"};
@@ -31,12 +32,8 @@ int main(int argc, char** argv) {
     app.add_option("--shifting", solver.shifting, "solver.shifting (negative: the wave default)")->capture_default_str();
     app.add_option("--difference-form", solver.differenceForm, "solver.difference_form (negative: the wave default)")
         ->capture_default_str();
-    bool smoothDensityError = false;
-    app.add_flag("--smooth-density-error,!--no-smooth-density-error", smoothDensityError,
-                 "solver.smooth_density_error (default: the wave settings', on in 2D)");
+    tide::bench::addSmoothDensityErrorFlags(app, solver);
     CLI11_PARSE(app, argc, argv);
-    if (app.count("--smooth-density-error") || app.count("--no-smooth-density-error"))
-        solver.smoothDensityError = smoothDensityError;
     tide::WaveMakerDef paddle;
     paddle.type = tide::WaveMakerDef::Type::Solitary;
     paddle.x = 0.1f;

@@ -1,9 +1,11 @@
 #pragma once
 /// \file
 /// Command-line options shared by the diagnostic tools on a tank of still water
-/// (tide_standing_wave, tide_rest_layers): the tank, the resolution and the solver settings,
+/// (tide_standing_wave, tide_rest_layers, tide_progressive_wave; the kernel and filter flags also
+/// tide_wave_bench and tide_solitary_wave): the tank, the resolution and the solver settings,
 /// and the WorldDef they make.
 
+#include <cstdint>
 #include <map>
 #include <string>
 
@@ -14,6 +16,23 @@
 #include "testing/scenarios.hpp"
 
 namespace tide::bench {
+
+/// `--kernel NAME` into `kernel` (solver.kernel's scene names).
+inline CLI::Option* addKernelOption(CLI::App& app, KernelShape& kernel) {
+    return app.add_option("--kernel", kernel, "solver.kernel")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, KernelShape>{{"cubic_spline", KernelShape::CubicSpline},
+                                                                               {"wendland_c2", KernelShape::WendlandC2},
+                                                                               {"automatic", KernelShape::Automatic}}))
+        ->default_str("automatic (Wendland C2 in 2D, cubic spline in 3D)");
+}
+
+/// `--smooth-density-error` / `--no-smooth-density-error` set solver.smoothDensityError;
+/// neither leaves it automatic (the wave settings decide).
+inline void addSmoothDensityErrorFlags(CLI::App& app, SolverDef& solver) {
+    app.add_flag_function(
+        "--smooth-density-error,!--no-smooth-density-error", [&solver](std::int64_t count) { solver.smoothDensityError = count > 0; },
+        "solver.smooth_density_error (dfsph; default: the wave settings', on in 2D for trains of waves)");
+}
 
 struct TankOptions {
     std::string solver = "dfsph";
@@ -37,11 +56,7 @@ struct TankOptions {
         app.add_option("--solver", solver, "solver.method")->capture_default_str();
         app.add_option("--viscosity", viscosity, "solver.viscosity (empty: the solver's own; xsph with --xsph 0: none)");
         app.add_option("--spacing", spacing, "particle spacing, m")->capture_default_str()->check(CLI::PositiveNumber);
-        app.add_option("--kernel", kernel, "solver.kernel")
-            ->transform(CLI::CheckedTransformer(std::map<std::string, KernelShape>{{"cubic_spline", KernelShape::CubicSpline},
-                                                                                   {"wendland_c2", KernelShape::WendlandC2},
-                                                                                   {"automatic", KernelShape::Automatic}}))
-            ->default_str("automatic (Wendland C2 in 2D, cubic spline in 3D)");
+        addKernelOption(app, kernel);
         app.add_option("--support-ratio", supportRatio, "kernel support / spacing (default: the kernel's own, 2 cubic spline, 3 Wendland C2)")
             ->check(CLI::Range(1.0, 4.0));
         app.add_option("--length", length, "tank length (x), m")->capture_default_str()->check(CLI::PositiveNumber);
